@@ -1,0 +1,11 @@
+# Every third-party package fluidsound builds against; all are Debian 12 packages installed by
+# tools/setup.sh. Imported targets are SYSTEM includes, so -Wall -Wextra stays about our code.
+find_package(TBB 2021 CONFIG REQUIRED)                 # parallel loops
+find_package(Eigen3 3.4 CONFIG REQUIRED)               # linear algebra, FFT (unsupported/Eigen/FFT)
+find_package(nlohmann_json 3.11 CONFIG REQUIRED)       # scene and bubble-track files
+find_package(CLI11 CONFIG REQUIRED)                    # command line
+find_package(GTest CONFIG REQUIRED)                    # tests
+find_package(benchmark CONFIG REQUIRED)                # benchmarks
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SndFile REQUIRED IMPORTED_TARGET sndfile)   # WAV / FLAC
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)       # spectrogram PNG with labelled axes

@@ -1,0 +1,250 @@
+// io/audio_file.cpp — WAV/FLAC through libsndfile (docs/audio.md): float or TPDF-dithered PCM,
+// optional peak normalisation, clipping counted, atomic output; reading back as floats.
+#include "io/audio_file.h"
+
+#include <sndfile.h>
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+
+namespace fluidsound::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Frames converted and handed to libsndfile per call: bounds the interleaved scratch buffer.
+constexpr std::size_t kBlockFrames = 8192;
+
+[[noreturn]] void badSettings(const fs::path& path, const std::string& reason) {
+  throw std::invalid_argument(path.string() + ": cannot write audio: " + reason);
+}
+
+/// The sample layout actually written: FLAC has no float samples, so 32 bits become 24.
+struct SampleLayout {
+  int format = 0;  ///< libsndfile SF_FORMAT_* major | subtype
+  int bits = 32;   ///< 32 = float; 24 or 16 = PCM
+};
+
+SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settings) {
+  if (settings.bitsPerSample != 16 && settings.bitsPerSample != 24 &&
+      settings.bitsPerSample != 32) {
+    badSettings(
+        path, "bitsPerSample must be 16, 24 or 32, not " + std::to_string(settings.bitsPerSample));
+  }
+  SampleLayout layout;
+  if (settings.format == AudioFormat::Flac) {
+    layout.bits = settings.bitsPerSample == 16 ? 16 : 24;
+    layout.format = SF_FORMAT_FLAC | (layout.bits == 16 ? SF_FORMAT_PCM_16 : SF_FORMAT_PCM_24);
+  } else {
+    layout.bits = settings.bitsPerSample;
+    layout.format = SF_FORMAT_WAV | (layout.bits == 32   ? SF_FORMAT_FLOAT
+                                     : layout.bits == 24 ? SF_FORMAT_PCM_24
+                                                         : SF_FORMAT_PCM_16);
+  }
+  return layout;
+}
+
+/// Largest |sample|; also checks that every sample is finite and the channels agree in length.
+double checkedPeak(const fs::path& path, const AudioBuffer& audio) {
+  if (audio.channels.empty()) badSettings(path, "no channels");
+  const std::size_t frames = audio.frameCount();
+  double peak = 0.0;
+  for (std::size_t c = 0; c < audio.channels.size(); ++c) {
+    const std::vector<float>& channel = audio.channels[c];
+    if (channel.size() != frames) {
+      badSettings(path, "channel " + std::to_string(c) + " has " + std::to_string(channel.size()) +
+                            " samples, channel 0 has " + std::to_string(frames));
+    }
+    for (std::size_t i = 0; i < frames; ++i) {
+      if (!std::isfinite(channel[i])) {
+        badSettings(path, "channel " + std::to_string(c) + ", frame " + std::to_string(i) +
+                              " is not a finite number");
+      }
+      peak = std::max(peak, static_cast<double>(std::abs(channel[i])));
+    }
+  }
+  return peak;
+}
+
+double decibelsFromAmplitude(double amplitude) {
+  return amplitude > 0 ? 20.0 * std::log10(amplitude) : -std::numeric_limits<double>::infinity();
+}
+
+/// Uniform on [0, 1) from the top 53 bits of one draw: exactly specified, unlike
+/// std::uniform_real_distribution, so the dither is the same with every standard library.
+double uniform01(std::mt19937_64& generator) {
+  return static_cast<double>(generator() >> 11) * 0x1.0p-53;
+}
+
+/// Owns an open SNDFILE; close() reports errors (a destructor cannot).
+class SoundFile {
+ public:
+  explicit SoundFile(SNDFILE* file) : file_(file) {}
+  ~SoundFile() {
+    if (file_ != nullptr) sf_close(file_);
+  }
+  SoundFile(const SoundFile&) = delete;
+  SoundFile& operator=(const SoundFile&) = delete;
+  SNDFILE* get() const { return file_; }
+  /// @return libsndfile's error code of the close (0 on success)
+  int close() {
+    const int code = sf_close(file_);
+    file_ = nullptr;
+    return code;
+  }
+
+ private:
+  SNDFILE* file_;
+};
+
+}  // namespace
+
+AudioFormat audioFormatFromPath(const fs::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".flac" ? AudioFormat::Flac : AudioFormat::Wav;
+}
+
+AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
+                            const AudioWriteSettings& settings) {
+  // Validate everything before touching the disk.
+  const SampleLayout layout = sampleLayout(path, settings);
+  const double rate = audio.sampleRate;
+  if (!(rate >= 1 && rate <= INT_MAX) || rate != std::floor(rate)) {
+    badSettings(
+        path, "the sample rate must be a positive whole number of Hz, not " + std::to_string(rate));
+  }
+  if (settings.normalizePeakDbfs && !std::isfinite(*settings.normalizePeakDbfs)) {
+    badSettings(path, "the normalisation peak must be a finite level in dBFS");
+  }
+  AudioWriteReport report;
+  report.inputPeak = checkedPeak(path, audio);
+  if (settings.normalizePeakDbfs && report.inputPeak > 0) {
+    report.gain = std::pow(10.0, *settings.normalizePeakDbfs / 20.0) / report.inputPeak;
+  }
+
+  SF_INFO info{};
+  info.samplerate = static_cast<int>(rate);
+  info.channels = static_cast<int>(audio.channels.size());
+  info.format = layout.format;
+  if (audio.channels.size() > INT_MAX || !sf_format_check(&info)) {
+    badSettings(path, "libsndfile cannot write this format with " +
+                          std::to_string(audio.channels.size()) + " channels at " +
+                          std::to_string(info.samplerate) + " Hz");
+  }
+
+  AtomicFile output(path);
+  SoundFile file(sf_open(output.temporaryPath().c_str(), SFM_WRITE, &info));
+  if (file.get() == nullptr) {
+    throw OutputError(path.string() + ": cannot write: " + sf_strerror(nullptr));
+  }
+  const auto writeFailed = [&] {
+    return OutputError(path.string() + ": cannot write: " + sf_strerror(file.get()));
+  };
+
+  const std::size_t channels = audio.channels.size();
+  const std::size_t frames = audio.frameCount();
+  double outputPeak = 0.0;  // full scale 1.0
+  if (layout.bits == 32) {
+    std::vector<float> block;
+    for (std::size_t start = 0; start < frames; start += kBlockFrames) {
+      const std::size_t count = std::min(kBlockFrames, frames - start);
+      block.resize(count * channels);
+      for (std::size_t i = 0; i < count; ++i) {
+        for (std::size_t c = 0; c < channels; ++c) {
+          const float value = static_cast<float>(audio.channels[c][start + i] * report.gain);
+          outputPeak = std::max(outputPeak, static_cast<double>(std::abs(value)));
+          block[i * channels + c] = value;
+        }
+      }
+      const auto want = static_cast<sf_count_t>(count);
+      if (sf_writef_float(file.get(), block.data(), want) != want) throw writeFailed();
+    }
+  } else {
+    // Codes q in [-2^(bits-1), 2^(bits-1) - 1]; full scale 1.0 is 2^(bits-1), as libsndfile reads.
+    const double fullScale = std::ldexp(1.0, layout.bits - 1);
+    const std::int64_t lowest = -static_cast<std::int64_t>(fullScale);
+    const std::int64_t highest = static_cast<std::int64_t>(fullScale) - 1;
+    // libsndfile keeps the top `bits` bits of the 32-bit ints it is given.
+    const std::int64_t toInt32 = std::int64_t{1} << (32 - layout.bits);
+    std::mt19937_64 dither(settings.ditherSeed);
+    std::int64_t largestCode = 0;
+    std::vector<int> block;
+    for (std::size_t start = 0; start < frames; start += kBlockFrames) {
+      const std::size_t count = std::min(kBlockFrames, frames - start);
+      block.resize(count * channels);
+      for (std::size_t i = 0; i < count; ++i) {
+        for (std::size_t c = 0; c < channels; ++c) {
+          // TPDF dither: the sum of two independent uniform ±0.5 LSB values (Lipshitz,
+          // Wannamaker & Vanderkooy 1992), drawn frame by frame, channel by channel.
+          const double noise = uniform01(dither) + uniform01(dither) - 1.0;
+          const double scaled = audio.channels[c][start + i] * report.gain * fullScale;
+          auto code = static_cast<std::int64_t>(std::floor(scaled + noise + 0.5));
+          if (code > highest || code < lowest) {
+            code = std::clamp(code, lowest, highest);
+            ++report.clippedSamples;
+          }
+          largestCode = std::max(largestCode, code < 0 ? -code : code);
+          block[i * channels + c] = static_cast<int>(code * toInt32);
+        }
+      }
+      const auto want = static_cast<sf_count_t>(count);
+      if (sf_writef_int(file.get(), block.data(), want) != want) throw writeFailed();
+    }
+    outputPeak = static_cast<double>(largestCode) / fullScale;
+  }
+  if (const int code = file.close(); code != 0) {
+    throw OutputError(path.string() + ": cannot write: " + sf_error_number(code));
+  }
+  output.commit();
+  report.outputPeakDbfs = decibelsFromAmplitude(outputPeak);
+  return report;
+}
+
+AudioBuffer readAudio(const fs::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(name, "", "a readable file", "no such file");
+  if (fs::is_directory(path, ec)) throw InputError(name, "", "a readable file", "a folder");
+  SF_INFO info{};
+  SoundFile file(sf_open(path.c_str(), SFM_READ, &info));
+  if (file.get() == nullptr) {
+    throw InputError(name, "", "an audio file that libsndfile can read (WAV, FLAC, ...)",
+                     sf_strerror(nullptr));
+  }
+  AudioBuffer audio;
+  audio.sampleRate = info.samplerate;
+  const auto channels = static_cast<std::size_t>(info.channels);
+  audio.channels.resize(channels);
+  if (info.frames > 0 && info.frames != SF_COUNT_MAX) {  // SF_COUNT_MAX: length unknown
+    for (auto& channel : audio.channels) channel.reserve(static_cast<std::size_t>(info.frames));
+  }
+  std::vector<float> block(kBlockFrames * channels);
+  sf_count_t count = 0;
+  while ((count = sf_readf_float(file.get(), block.data(), static_cast<sf_count_t>(kBlockFrames))) >
+         0) {
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+      for (std::size_t c = 0; c < channels; ++c)
+        audio.channels[c].push_back(block[i * channels + c]);
+    }
+  }
+  if (sf_error(file.get()) != SF_ERR_NO_ERROR) {
+    throw InputError(name, "", "a readable audio file", sf_strerror(file.get()));
+  }
+  return audio;
+}
+
+}  // namespace fluidsound::io

@@ -1,0 +1,49 @@
+// io/audio_file.h — WAV and FLAC through libsndfile: 32-bit float by default, 16/24-bit PCM with
+// TPDF dither on request, optional normalisation to a peak level, atomic output; and reading back.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace fluidsound::io {
+
+/// Audio in memory: one vector of samples per channel, all the same length.
+struct AudioBuffer {
+  double sampleRate = 48000.0;               ///< Hz
+  std::vector<std::vector<float>> channels;  ///< samples per channel (Pa for renders, else file units)
+  std::size_t frameCount() const { return channels.empty() ? 0 : channels.front().size(); }
+};
+
+enum class AudioFormat { Wav, Flac };
+
+struct AudioWriteSettings {
+  AudioFormat format = AudioFormat::Wav;
+  int bitsPerSample = 32;                      ///< 32 (float; WAV only), 24 or 16 (PCM, TPDF-dithered)
+  std::optional<double> normalizePeakDbfs;     ///< scale so the peak is at this level [dBFS], e.g. −1
+  std::uint64_t ditherSeed = 1;                ///< seed of the TPDF dither noise (deterministic)
+};
+
+/// What writing did to the signal.
+struct AudioWriteReport {
+  double inputPeak = 0.0;        ///< largest |sample| before scaling (input units, Pa for renders)
+  double gain = 1.0;             ///< factor applied before writing (normalisation), [-]
+  double outputPeakDbfs = 0.0;   ///< peak written, dB relative to full scale 1.0
+  std::int64_t clippedSamples = 0;  ///< samples beyond full scale in a PCM file (clipped by the format)
+};
+
+/// @brief Infers the format from a file name: `.flac` → Flac, otherwise Wav.
+AudioFormat audioFormatFromPath(const std::filesystem::path& path);
+
+/// @brief Writes audio atomically. FLAC has no float samples: it is written as 24-bit (or 16-bit)
+///        PCM. PCM output beyond full scale is clipped and counted in the report (never silently).
+/// @throws OutputError if the file cannot be written; std::invalid_argument on bad settings
+AudioWriteReport writeAudio(const std::filesystem::path& path, const AudioBuffer& audio,
+                            const AudioWriteSettings& settings);
+
+/// @brief Reads any audio file libsndfile opens, as floats in file units (full scale 1.0 for PCM).
+/// @throws InputError if the file is missing or not audio
+AudioBuffer readAudio(const std::filesystem::path& path);
+
+}  // namespace fluidsound::io

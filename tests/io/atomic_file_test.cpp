@@ -1,0 +1,179 @@
+// tests/io/atomic_file_test.cpp — an AtomicFile's target appears whole on commit() or not at all.
+#include "io/atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>  // access
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/input_error.h"
+
+namespace fluidsound::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh folder under the system's temporary folder, removed with everything in it.
+class TempFolder {
+ public:
+  TempFolder() {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::random_device entropy;
+    path_ = fs::temp_directory_path() / ("fluidsound-io-" + std::string(test->test_suite_name()) +
+                                         "-" + test->name() + "-" + std::to_string(entropy()));
+    fs::create_directories(path_);
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ignored);
+    fs::remove_all(path_, ignored);
+  }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+
+  const fs::path& path() const { return path_; }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(path_))
+      names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+ private:
+  fs::path path_;
+};
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  ASSERT_TRUE(out.good()) << path;
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(AtomicFile, TargetAppearsOnlyAfterCommit) {
+  TempFolder folder;
+  const fs::path target = folder.path() / "out.txt";
+  AtomicFile file(target);
+  // The temporary is a hidden file beside the target, so the rename never crosses file systems.
+  EXPECT_EQ(file.temporaryPath().parent_path(), folder.path());
+  EXPECT_TRUE(file.temporaryPath().filename().string().starts_with(".out.txt.tmp-"))
+      << file.temporaryPath();
+  EXPECT_EQ(file.targetPath(), target);
+  writeText(file.temporaryPath(), "whole");
+  EXPECT_FALSE(fs::exists(target));
+  file.commit();
+  EXPECT_EQ(readText(target), "whole");
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, UncommittedTemporaryIsRemoved) {
+  TempFolder folder;
+  {
+    AtomicFile file(folder.path() / "out.txt");
+    writeText(file.temporaryPath(), "half");
+    EXPECT_EQ(folder.entries().size(), 1u);
+  }
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(AtomicFile, FailureBeforeCommitLeavesNothing) {
+  TempFolder folder;
+  try {
+    AtomicFile file(folder.path() / "out.txt");
+    writeText(file.temporaryPath(), "half");
+    throw std::runtime_error("the writer failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(AtomicFile, ExistingTargetIsUntouchedUntilCommit) {
+  TempFolder folder;
+  const fs::path target = folder.path() / "out.txt";
+  writeText(target, "old");
+  {
+    AtomicFile file(target);
+    writeText(file.temporaryPath(), "new, abandoned");
+  }
+  EXPECT_EQ(readText(target), "old");
+  AtomicFile file(target);
+  writeText(file.temporaryPath(), "new");
+  EXPECT_EQ(readText(target), "old");
+  file.commit();
+  EXPECT_EQ(readText(target), "new");
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, SimultaneousWritersGetDistinctTemporaries) {
+  TempFolder folder;
+  AtomicFile first(folder.path() / "out.txt");
+  AtomicFile second(folder.path() / "out.txt");
+  EXPECT_NE(first.temporaryPath(), second.temporaryPath());
+}
+
+TEST(AtomicFile, MissingFolderIsAnOutputErrorNamingThePath) {
+  TempFolder folder;
+  const fs::path target = folder.path() / "missing" / "out.txt";
+  try {
+    AtomicFile file(target);
+    FAIL() << "no OutputError";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_TRUE(message.starts_with(target.string() + ": cannot write")) << message;
+    EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(AtomicFile, FolderThatIsAFileIsAnOutputError) {
+  TempFolder folder;
+  writeText(folder.path() / "plain", "not a folder");
+  const fs::path target = folder.path() / "plain" / "out.txt";
+  try {
+    AtomicFile file(target);
+    FAIL() << "no OutputError";
+  } catch (const OutputError& error) {
+    EXPECT_TRUE(std::string(error.what()).starts_with(target.string() + ": ")) << error.what();
+  }
+}
+
+TEST(AtomicFile, TargetThatIsAFolderIsAnOutputError) {
+  TempFolder folder;
+  fs::create_directory(folder.path() / "sub");
+  EXPECT_THROW(AtomicFile(folder.path() / "sub"), OutputError);
+}
+
+TEST(AtomicFile, ReadOnlyFolderIsAnOutputError) {
+  TempFolder folder;
+  const fs::path readOnly = folder.path() / "read-only";
+  fs::create_directory(readOnly);
+  fs::permissions(readOnly, fs::perms::owner_read | fs::perms::owner_exec);
+  if (::access(readOnly.c_str(), W_OK) == 0) {
+    GTEST_SKIP() << "this process may write into read-only folders (running as root?)";
+  }
+  try {
+    AtomicFile file(readOnly / "out.txt");
+    FAIL() << "no OutputError";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_TRUE(message.starts_with((readOnly / "out.txt").string() + ": cannot write")) << message;
+    EXPECT_NE(message.find("Permission denied"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace fluidsound::io

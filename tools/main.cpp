@@ -1,0 +1,71 @@
+// tools/main.cpp — the `fluidsound` command: parses the command line (CLI11), sets the thread
+// limit, runs one subcommand and turns every failure into one line and an exit code (docs/cli.md).
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+#include <oneapi/tbb/global_control.h>
+
+#include "io/input_error.h"
+#include "tools/run_report.h"
+#include "tools/spectrogram_command.h"
+#include "tools/synth_command.h"
+#include "tools/validate_command.h"
+
+using namespace fluidsound::tools;
+
+namespace {
+
+int runWithThreads(int threads, const auto& command) {
+  // The only place that limits TBB's threads (docs/cli.md: --threads N, 0 = all cores).
+  if (threads > 0) {
+    const oneapi::tbb::global_control limit(oneapi::tbb::global_control::max_allowed_parallelism,
+                                            static_cast<std::size_t>(threads));
+    return command();
+  }
+  return command();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"fluidsound — the sound of liquids from physics (Harmonic Fluids, Zheng & James 2009)"};
+  app.set_version_flag("--version", versionText());
+  app.require_subcommand(1);
+  SynthOptions synth;
+  SpectrogramOptions spectrogram;
+  ValidateOptions validate;
+  CLI::App* synthCommand = addSynthCommand(app, synth);
+  CLI::App* spectrogramCommand = addSpectrogramCommand(app, spectrogram);
+  CLI::App* validateCommand = addValidateCommand(app, validate);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
+    std::fprintf(stderr, "  (see fluidsound %s--help)\n",
+                 app.get_subcommands().empty() ? "" : (app.get_subcommands().front()->get_name() + " ").c_str());
+    return kExitUsage;
+  }
+
+  try {
+    if (synthCommand->parsed())
+      return runWithThreads(synth.common.threads, [&] { return runSynthCommand(synth); });
+    if (spectrogramCommand->parsed())
+      return runWithThreads(spectrogram.common.threads, [&] { return runSpectrogramCommand(spectrogram); });
+    if (validateCommand->parsed())
+      return runWithThreads(validate.common.threads, [&] { return runValidateCommand(validate); });
+  } catch (const fluidsound::io::InputError& e) {
+    std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const fluidsound::io::OutputError& e) {
+    std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
+    return kExitOutputFailed;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fluidsound: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+  return kExitUsage;
+}

@@ -1,0 +1,79 @@
+// tools/run_report.cpp — report.json (see run_report.h).
+#include "tools/run_report.h"
+
+#include <sys/resource.h>
+
+#include <CLI/Version.hpp>
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <oneapi/tbb/version.h>
+
+#include "io/library_versions.h"
+#include "io/text_file.h"
+
+namespace fluidsound::tools {
+
+struct RunReport::Data {
+  nlohmann::ordered_json json;
+};
+
+RunReport::RunReport(const std::string& command) : data_(std::make_unique<Data>()) {
+  data_->json["format"] = "fluidsound.report/1";
+  data_->json["command"] = command;
+  data_->json["settings"] = nlohmann::ordered_json::object();
+  data_->json["stages"] = nlohmann::ordered_json::object();
+  data_->json["results"] = nlohmann::ordered_json::object();
+}
+
+RunReport::~RunReport() = default;
+
+void RunReport::setting(const std::string& key, const std::string& value) {
+  data_->json["settings"][key] = value;
+}
+void RunReport::setting(const std::string& key, double value) { data_->json["settings"][key] = value; }
+
+void RunReport::setOscillatorModel(const acoustics::OscillatorModel& m) {
+  using namespace acoustics;
+  auto& j = data_->json["settings"]["oscillator_model"];
+  j["polytropic"] = m.polytropic == PolytropicModel::Thermal ? "thermal" : "adiabatic";
+  j["surface_tension"] = m.surfaceTension;
+  j["vapour"] = m.vapour;
+  j["hydrostatic"] = m.hydrostatic;
+  j["damping"] = m.damping == DampingModel::Devin ? "devin" : "vandendoel";
+  j["excitation"] = m.excitation == ExcitationModel::NeckCollapseJet ? "jet" : "displacement";
+  if (m.excitation == ExcitationModel::InitialDisplacement) j["displacement"] = m.initialDisplacement;
+  j["chirp"] = m.chirp;
+  if (m.chirp) j["chirp_rise_factor"] = m.chirpRiseFactor;
+}
+
+void RunReport::stageSeconds(const std::string& stage, double seconds) {
+  data_->json["stages"][stage] = {{"seconds", seconds}};
+}
+
+void RunReport::result(const std::string& key, double value) { data_->json["results"][key] = value; }
+
+void RunReport::resultJson(const std::string& key, const std::string& jsonText) {
+  data_->json["results"][key] = nlohmann::ordered_json::parse(jsonText);
+}
+
+double peakMemoryBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux reports kilobytes
+}
+
+std::string versionText() {
+  return std::string("fluidsound ") + FLUIDSOUND_VERSION + "\n" +
+         "  TBB " + TBB_VERSION_STRING + "\n" +
+         "  Eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
+         "." + std::to_string(EIGEN_MINOR_VERSION) + "\n" +
+         "  CLI11 " + CLI11_VERSION + "\n" + io::libraryVersions();
+}
+
+void RunReport::write(const std::filesystem::path& path) {
+  data_->json["peak_memory_bytes"] = peakMemoryBytes();
+  data_->json["versions"] = versionText();
+  io::writeTextFile(path, data_->json.dump(2) + "\n");
+}
+
+}  // namespace fluidsound::tools

@@ -1,0 +1,32 @@
+// tools/synth_command.h — `fluidsound synth BUBBLES.json -o OUT.wav`: bubble tracks → audio file,
+// its spectrogram (optional) and a report.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "acoustics/oscillator_model.h"
+#include "tools/command_options.h"
+
+namespace fluidsound::tools {
+
+struct SynthOptions {
+  CommonOptions common;
+  std::string input;                 ///< bubble-track file
+  std::string output;                ///< .wav or .flac
+  std::optional<double> sampleRate;  ///< Hz; default: the file's sample_rate
+  std::string format;                ///< wav | flac; default from the output's extension
+  int bits = 0;                      ///< 16 | 24 | 32; default 32 (WAV), 24 (FLAC)
+  std::optional<double> normalizeDbfs;
+  std::optional<double> duration;    ///< s; default: the file's, else until all have decayed
+  std::string report;                ///< report path; default OUT with extension .report.json
+  std::string spectrogram;           ///< also draw this PNG, if given
+  acoustics::OscillatorModel model;
+};
+
+CLI::App* addSynthCommand(CLI::App& app, SynthOptions& options);
+
+/// @throws io::InputError, io::OutputError (main turns them into one-line errors)
+int runSynthCommand(const SynthOptions& options);
+
+}  // namespace fluidsound::tools
