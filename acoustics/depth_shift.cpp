@@ -53,8 +53,12 @@ double exactCapacitanceRatio(double radius, double depth, double sign, const cha
 
 // Strasberg 1953 (as coded in Langlois' 2016 demo): f(h)/f∞ = (1 − x − x⁴)^(−1/2). docs/physics.md §5.
 double freeSurfaceFrequencyRatio(double radius, double depth) {
+  return std::sqrt(freeSurfaceFrequencyRatioSquared(radius, depth));
+}
+
+double freeSurfaceFrequencyRatioSquared(double radius, double depth) {
   const double x = strasbergParameter(radius, depth);
-  return 1.0 / std::sqrt(1.0 - x - x * x * x * x);
+  return 1.0 / (1.0 - x - x * x * x * x);
 }
 
 // Strasberg 1953: f(h)/f∞ = (1 + x − x⁴)^(−1/2). docs/physics.md §5.

@@ -41,6 +41,8 @@ std::complex<double> thermalPolytropicFunction(double angularFrequency, double r
 ///        Terms follow model.surfaceTension and model.vapour.
 /// @param radius           R [m], > 0
 /// @param ambientPressure  p_amb [Pa] (see ambientPressureAt)
+/// @throws std::domain_error if the restoring pressure 3κ·p_g0 − 2σ/R is not positive
+/// @throws std::runtime_error if the thermal fixed-point iteration does not converge
 double naturalAngularFrequency(double radius, double ambientPressure,
                                const LiquidProperties& liquid, const OscillatorModel& model);
 

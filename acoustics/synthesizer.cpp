@@ -10,9 +10,15 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
+#include <memory>
 #include <numbers>
+#include <optional>
+#include <span>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "acoustics/bubble_oscillator.h"
 #include "acoustics/depth_shift.h"
@@ -28,74 +34,92 @@ double decayTime(double decayRate, double decibels) {
 
 namespace {
 
-/// Blocks per parallel work item (16 × 256 samples = 85 ms at 48 kHz): long enough that bringing
+/// Blocks per parallel work item (32 × 512 samples = 0.34 s at 48 kHz): long enough that bringing
 /// a ringing bubble up to the segment start costs little, short enough to balance two cores.
-constexpr std::int64_t kSegmentBlocks = 16;
+constexpr std::int64_t kSegmentBlocks = 32;
 /// Segments per progress report.
-constexpr std::int64_t kSegmentsPerWave = 32;
+constexpr std::int64_t kSegmentsPerWave = 8;
+/// Below this per-sample phase change the rotation e^{iθ} is taken from its Taylor series
+/// (error θ⁶/720 < 1e-21), saving a sincos per bubble and block.
+constexpr double kSmallAngle = 1e-3;
 
-/// A bubble prepared for rendering: its constants and the samples it occupies.
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+/// A bubble prepared for rendering: its constants, its track and the samples it occupies.
 struct Voice {
-  const BubbleTrack* bubble = nullptr;
-  OscillatorConstants oscillator;     ///< deep, at the surface's ambient pressure
+  const BubbleTrack* bubble = nullptr;     ///< only while preparing; rendering reads the copies below
+  double radius = 0.0;                     ///< R [m]
+  double birth = 0.0;                      ///< t_b [s]
+  TrackInterpolator track;
+  OscillatorConstants oscillator;          ///< deep, at the surface's ambient pressure
   double adiabaticAngularFrequency = 0.0;  ///< ω₀ of the adiabatic model at p₀ [rad/s] (hydrostatic factor)
-  std::int64_t firstSample = 0;       ///< first sample at or after birth
+  double sampleDecay = 0.0;                ///< e^{−βΔt}
+  double blockDecay = 0.0;                 ///< e^{−βBΔt}, B = kBlockSamples
+  std::int64_t firstSample = 0;            ///< first sample at or after birth
   std::int64_t firstBlock = 0;
-  std::int64_t endBlock = 0;          ///< one past the block in which it has decayed by the cut-off
+  double endTime = 0.0;                    ///< time it has decayed by the cut-off [s]
+  std::int64_t endSample = 0;              ///< first sample after endTime
+  std::int64_t endBlock = 0;               ///< one past the block that holds endSample − 1
 };
 
 /// Where a voice stands at a given sample.
 struct VoiceState {
   std::int64_t sample = 0;
-  double phase = 0.0;            ///< φ [rad], in [0, 2π)
-  double magnitude = 0.0;        ///< A e^{−β(t−t_b)} [Pa]
-  double angularFrequency = 0.0; ///< instantaneous ω [rad/s]
-  std::vector<double> gain;      ///< transfer per listener [-]
+  double phase = 0.0;             ///< φ [rad], in [0, 2π)
+  double magnitude = 0.0;         ///< A e^{−β(t−t_b)} [Pa]
+  double angularFrequency = 0.0;  ///< instantaneous ω [rad/s]
+  TrackValues values;             ///< depth and transfer per listener
+  std::size_t cursor = 0;         ///< track interval of the last evaluation
 };
 
 /// Everything a segment needs about the whole render.
 struct RenderContext {
   const SynthesisSettings& settings;
   std::size_t channels;
-  double dt;                     ///< sample period [s]
+  double dt;                      ///< sample period [s]
   std::int64_t frames;
 };
 
-/// Instantaneous angular frequency [rad/s] of a voice with track values v at time t.
+/// Instantaneous damped angular frequency [rad/s] of a voice with track values v at time t.
 double instantaneousAngularFrequency(const Voice& voice, const TrackValues& v, double t,
                                      const SynthesisSettings& s) {
-  const double radius = voice.bubble->radius;
-  double w = voice.oscillator.angularFrequency;
+  const double radius = voice.radius;
+  double w2 = voice.oscillator.angularFrequency * voice.oscillator.angularFrequency;  // ω² [rad²/s²]
   if (std::isfinite(v.depth)) {
-    w *= freeSurfaceFrequencyRatio(radius, v.depth);  // Strasberg 1953, docs/physics.md §5
+    w2 *= freeSurfaceFrequencyRatioSquared(radius, v.depth);  // Strasberg 1953, docs/physics.md §5
     if (s.model.hydrostatic) {
       // p₀ → p₀ + ρgh acts on the restoring term; applied as the adiabatic model's ratio.
       OscillatorModel adiabatic = s.model;
       adiabatic.polytropic = PolytropicModel::Adiabatic;
       const double p = ambientPressureAt(v.depth, s.liquid, s.model);
-      w *= naturalAngularFrequency(radius, p, s.liquid, adiabatic) / voice.adiabaticAngularFrequency;
+      const double ratio = naturalAngularFrequency(radius, p, s.liquid, adiabatic) / voice.adiabaticAngularFrequency;
+      w2 *= ratio * ratio;
     }
   }
-  if (s.model.chirp)  // van den Doel 2005: f(t) = f₀(1 + ξβt), docs/physics.md §7.4
-    w *= 1.0 + s.model.chirpRiseFactor * voice.oscillator.decayRate * (t - voice.bubble->birth);
+  if (s.model.chirp) {  // van den Doel 2005: f(t) = f₀(1 + ξβt), docs/physics.md §7.4
+    const double rise = 1.0 + s.model.chirpRiseFactor * voice.oscillator.decayRate * (t - voice.birth);
+    w2 *= rise * rise;
+  }
   // The free response of v̈ + 2βv̇ + ω₀²v = 0 rings at ω_d = √(ω₀² − β²) (docs/physics.md §1).
   const double beta = voice.oscillator.decayRate;
-  return std::sqrt(std::max(w * w - beta * beta, 0.0));
+  return std::sqrt(std::max(w2 - beta * beta, 0.0));
 }
 
-Voice prepareVoice(const BubbleTrack& bubble, const SynthesisSettings& s) {
-  Voice v;
-  v.bubble = &bubble;
-  const double p0 = s.liquid.ambientPressure;
-  v.oscillator = bubbleOscillator(bubble.radius, p0, s.liquid, s.model, bubble.amplitude);
+Voice prepareVoice(const BubbleTrack& bubble, std::size_t channels, std::span<double> trackStorage,
+                   const SynthesisSettings& s) {
+  const double p0 = s.liquid.ambientPressure, dt = 1.0 / s.sampleRate;
   OscillatorModel adiabatic = s.model;
   adiabatic.polytropic = PolytropicModel::Adiabatic;
-  v.adiabaticAngularFrequency = naturalAngularFrequency(bubble.radius, p0, s.liquid, adiabatic);
+  Voice v{&bubble, bubble.radius, bubble.birth, TrackInterpolator(bubble, channels, trackStorage),
+          bubbleOscillator(bubble.radius, p0, s.liquid, s.model, bubble.amplitude),
+          naturalAngularFrequency(bubble.radius, p0, s.liquid, adiabatic)};
+  v.sampleDecay = std::exp(-v.oscillator.decayRate * dt);
+  v.blockDecay = std::exp(-v.oscillator.decayRate * kBlockSamples * dt);
   v.firstSample = static_cast<std::int64_t>(std::ceil(bubble.birth * s.sampleRate));
   v.firstBlock = v.firstSample / kBlockSamples;
-  const double end = bubble.birth + decayTime(v.oscillator.decayRate, s.cutoffDecibels);
-  const auto endSample = static_cast<std::int64_t>(std::ceil(end * s.sampleRate));
-  v.endBlock = std::max(endSample / kBlockSamples + 1, v.firstBlock + 1);
+  v.endTime = bubble.birth + decayTime(v.oscillator.decayRate, s.cutoffDecibels);
+  v.endSample = std::max(static_cast<std::int64_t>(std::ceil(v.endTime * s.sampleRate)), v.firstSample + 1);
+  v.endBlock = (v.endSample - 1) / kBlockSamples + 1;
   return v;
 }
 
@@ -113,144 +137,161 @@ double peakAngularFrequency(const Voice& voice, const SynthesisSettings& s) {
   return w;
 }
 
+double wrapPhase(double phase) { return phase - kTwoPi * std::floor(phase / kTwoPi); }
+
+/// e^{iθ}, by Taylor series for small θ.
+std::complex<double> unitRotation(double theta) {
+  if (std::fabs(theta) >= kSmallAngle) return std::polar(1.0, theta);
+  const double t2 = theta * theta;
+  return {1.0 - t2 / 2.0 + t2 * t2 / 24.0, theta * (1.0 - t2 / 6.0 + t2 * t2 / 120.0)};
+}
+
 /// Starts a voice at its first sample.
-VoiceState startVoice(const Voice& voice, TrackInterpolator& interp, TrackValues& values,
-                      const RenderContext& ctx) {
+VoiceState startVoice(const Voice& voice, const RenderContext& ctx) {
   VoiceState st;
   st.sample = voice.firstSample;
   const double t = static_cast<double>(st.sample) * ctx.dt;
-  const double age = t - voice.bubble->birth;  // < one sample: birth is not quantised
-  interp.evaluate(t, values);
-  st.angularFrequency = instantaneousAngularFrequency(voice, values, t, ctx.settings);
-  st.phase = std::fmod(st.angularFrequency * age, 2.0 * std::numbers::pi);
+  const double age = t - voice.birth;  // < one sample: birth is not quantised
+  st.values = voice.track.evaluate(t, st.cursor);
+  st.angularFrequency = instantaneousAngularFrequency(voice, st.values, t, ctx.settings);
+  st.phase = wrapPhase(st.angularFrequency * age);
   st.magnitude = voice.oscillator.amplitude * std::exp(-voice.oscillator.decayRate * age);
-  st.gain = values.transfer;
   return st;
 }
 
-/// Advances a voice from st.sample to `sample` (the next block boundary), with ω varying
+/// The state of a voice at `sample` (the next block boundary) from its state `st`, with ω varying
 /// linearly per sample: φ += Δt(Nω_a + Δω N(N−1)/2), Δω = (ω_b − ω_a)/N — exactly what the
 /// oscillator recurrence does (docs/synthesis.md).
-void advanceVoice(const Voice& voice, VoiceState& st, std::int64_t sample, TrackInterpolator& interp,
-                  TrackValues& values, const RenderContext& ctx) {
-  const auto n = static_cast<double>(sample - st.sample);
+VoiceState advanceVoice(const Voice& voice, const VoiceState& st, std::int64_t sample,
+                        const RenderContext& ctx) {
+  VoiceState next;
+  next.sample = sample;
+  next.cursor = st.cursor;
+  const std::int64_t count = sample - st.sample;
+  const auto n = static_cast<double>(count);
   const double t = static_cast<double>(sample) * ctx.dt;
-  interp.evaluate(t, values);
-  const double w = instantaneousAngularFrequency(voice, values, t, ctx.settings);
-  const double dw = (w - st.angularFrequency) / n;
-  st.phase = std::fmod(st.phase + ctx.dt * (n * st.angularFrequency + dw * n * (n - 1.0) / 2.0),
-                       2.0 * std::numbers::pi);
-  st.magnitude *= std::exp(-voice.oscillator.decayRate * n * ctx.dt);
-  st.angularFrequency = w;
-  st.gain = values.transfer;
-  st.sample = sample;
+  next.values = voice.track.evaluate(t, next.cursor);
+  next.angularFrequency = instantaneousAngularFrequency(voice, next.values, t, ctx.settings);
+  const double dw = (next.angularFrequency - st.angularFrequency) / n;
+  next.phase = wrapPhase(st.phase + ctx.dt * (n * st.angularFrequency + dw * n * (n - 1.0) / 2.0));
+  next.magnitude = st.magnitude * (count == kBlockSamples ? voice.blockDecay
+                                                          : std::exp(-voice.oscillator.decayRate * n * ctx.dt));
+  return next;
 }
 
-/// Fills lane `lane` of `group` for the stretch from st to the end of the block (whose values
-/// at the end are `next`), starting at offset `first` inside the block.
-void loadLane(OscillatorGroup& group, int lane, const Voice& voice, const VoiceState& st,
-              const VoiceState& next, const RenderContext& ctx) {
+/// Oscillator parameters of one voice over one block, flat: z, r, c (complex, re/im), the first
+/// sample, then per listener the gain and its step. Voices are scheduled into these first (voice by
+/// voice, so each voice's track stays in cache) and rendered block by block afterwards.
+constexpr std::size_t kLaneHeader = 7;
+
+void appendLane(std::vector<float>& lanes, const Voice& voice, const VoiceState& st,
+                const VoiceState& next, const RenderContext& ctx) {
   const auto n = static_cast<double>(next.sample - st.sample);
   const std::complex<double> z = std::polar(st.magnitude, st.phase);
-  const std::complex<double> r =
-      std::polar(std::exp(-voice.oscillator.decayRate * ctx.dt), st.angularFrequency * ctx.dt);
-  const double dw = (next.angularFrequency - st.angularFrequency) / n;
-  const std::complex<double> c = std::polar(1.0, dw * ctx.dt);
-  group.zRe[lane] = static_cast<float>(z.real());
-  group.zIm[lane] = static_cast<float>(z.imag());
-  group.rRe[lane] = static_cast<float>(r.real());
-  group.rIm[lane] = static_cast<float>(r.imag());
-  group.cRe[lane] = static_cast<float>(c.real());
-  group.cIm[lane] = static_cast<float>(c.imag());
+  const std::complex<double> r = voice.sampleDecay * std::polar(1.0, st.angularFrequency * ctx.dt);
+  const std::complex<double> c = unitRotation((next.angularFrequency - st.angularFrequency) / n * ctx.dt);
+  lanes.insert(lanes.end(), {static_cast<float>(z.real()), static_cast<float>(z.imag()),
+                             static_cast<float>(r.real()), static_cast<float>(r.imag()),
+                             static_cast<float>(c.real()), static_cast<float>(c.imag()),
+                             static_cast<float>(st.sample % kBlockSamples)});
   for (std::size_t l = 0; l < ctx.channels; ++l) {
-    group.gain[l][lane] = static_cast<float>(st.gain[l]);
-    group.gainStep[l][lane] = static_cast<float>((next.gain[l] - st.gain[l]) / n);
+    lanes.push_back(static_cast<float>(st.values.transfer[l]));
+    lanes.push_back(static_cast<float>((next.values.transfer[l] - st.values.transfer[l]) / n));
   }
-  group.firstSample[lane] = static_cast<float>(st.sample % kBlockSamples);
 }
 
-void clearGroup(OscillatorGroup& g) { g = OscillatorGroup{}; }
+/// Renders flat lanes (appendLane) in groups of kOscillatorLanes into the accumulator.
+/// @return the most lanes one group used
+int accumulateLanes(const std::vector<float>& lanes, bool masked, const RenderContext& ctx,
+                    float* accumulator) {
+  int widest = 0;
+  const std::size_t stride = kLaneHeader + 2 * ctx.channels, count = lanes.size() / stride;
+  for (std::size_t first = 0; first < count; first += kOscillatorLanes) {
+    OscillatorGroup g{};
+    for (std::size_t lane = 0; lane < kOscillatorLanes && first + lane < count; ++lane) {
+      const float* p = lanes.data() + (first + lane) * stride;
+      g.zRe[lane] = p[0];
+      g.zIm[lane] = p[1];
+      g.rRe[lane] = p[2];
+      g.rIm[lane] = p[3];
+      g.cRe[lane] = p[4];
+      g.cIm[lane] = p[5];
+      g.firstSample[lane] = p[6];
+      for (std::size_t l = 0; l < ctx.channels; ++l) {
+        g.gain[l][lane] = p[kLaneHeader + 2 * l];
+        g.gainStep[l][lane] = p[kLaneHeader + 2 * l + 1];
+      }
+    }
+    const int used = static_cast<int>(std::min<std::size_t>(kOscillatorLanes, count - first));
+    accumulateOscillatorGroup(g, static_cast<int>(ctx.channels), masked, accumulator, used);
+    widest = std::max(widest, used);
+  }
+  return widest;
+}
 
-/// A voice inside one segment: its interpolator, current state and scratch values.
-struct SegmentVoice {
-  const Voice* voice;
-  TrackInterpolator interp;
-  TrackValues values;
-  VoiceState state;
-  bool started = false;
+/// The lanes to render in one block: voices that ring through it, and voices born inside it.
+struct BlockSchedule {
+  std::vector<float> full, masked;
 };
 
-void renderSegment(std::int64_t segment, std::span<const Voice> voices,
-                   std::span<const std::int64_t> order, std::int64_t maxLifetimeBlocks,
-                   const RenderContext& ctx, std::vector<std::vector<float>>& out) {
+/// Scratch memory of one worker thread, reused from segment to segment. Its contents are
+/// rebuilt for every segment, so which thread renders a segment never shows in the output.
+struct SegmentScratch {
+  std::vector<BlockSchedule> schedule;
+  std::vector<float> accumulator;
+};
+
+void renderSegment(std::int64_t segment, std::span<const Voice> voices, std::int64_t maxLifetimeBlocks,
+                   const RenderContext& ctx, SegmentScratch& scratch,
+                   std::vector<std::vector<float>>& out) {
   const std::int64_t totalBlocks = (ctx.frames + kBlockSamples - 1) / kBlockSamples;
   const std::int64_t b0 = segment * kSegmentBlocks;
   const std::int64_t b1 = std::min(b0 + kSegmentBlocks, totalBlocks);
 
   // Voices ringing in [b0, b1): sorted by first block, so a window of the order suffices.
-  const auto byFirstBlock = [&](std::int64_t i, std::int64_t block) {
-    return voices[i].firstBlock < block;
-  };
-  const auto lo = std::lower_bound(order.begin(), order.end(), b0 - maxLifetimeBlocks, byFirstBlock);
-  const auto hi = std::lower_bound(order.begin(), order.end(), b1, byFirstBlock);
-  std::vector<SegmentVoice> active;
+  const auto byFirstBlock = [](const Voice& v, std::int64_t block) { return v.firstBlock < block; };
+  const auto lo = std::lower_bound(voices.begin(), voices.end(), b0 - maxLifetimeBlocks, byFirstBlock);
+  const auto hi = std::lower_bound(voices.begin(), voices.end(), b1, byFirstBlock);
+
+  // Schedule, voice by voice: each voice's state at every block boundary of the segment.
+  std::vector<BlockSchedule>& schedule = scratch.schedule;
+  schedule.resize(static_cast<std::size_t>(b1 - b0));
+  for (BlockSchedule& block : schedule) {
+    block.full.clear();
+    block.masked.clear();
+  }
   for (auto it = lo; it != hi; ++it) {
-    const Voice& v = voices[*it];
-    if (v.endBlock > b0) active.push_back({&v, TrackInterpolator(*v.bubble, ctx.channels), {}, {}, false});
+    const Voice& v = *it;
+    if (v.endBlock <= b0) continue;
+    VoiceState state = startVoice(v, ctx);
+    // A voice born before the segment is brought to its start by the same block steps a
+    // continuous render takes, so segment boundaries leave no trace in the output.
+    while (state.sample < b0 * kBlockSamples)
+      state = advanceVoice(v, state, (state.sample / kBlockSamples + 1) * kBlockSamples, ctx);
+    for (std::int64_t b = std::max(b0, v.firstBlock); b < std::min(b1, v.endBlock); ++b) {
+      const VoiceState next = advanceVoice(v, state, (b + 1) * kBlockSamples, ctx);
+      BlockSchedule& block = schedule[static_cast<std::size_t>(b - b0)];
+      appendLane(state.sample > b * kBlockSamples ? block.masked : block.full, v, state, next, ctx);
+      state = next;
+    }
   }
 
-  std::vector<float> acc(ctx.channels * kBlockSamples * kOscillatorLanes);
-  OscillatorGroup full{}, masked{};
-  int fullLanes = 0, maskedLanes = 0;
-  VoiceState next;
-  const int listeners = static_cast<int>(ctx.channels);
-  const auto flush = [&](OscillatorGroup& g, int& lanes, bool isMasked) {
-    if (lanes == 0) return;
-    accumulateOscillatorGroup(g, listeners, isMasked, acc.data());
-    clearGroup(g);
-    lanes = 0;
-  };
-
+  // Render, block by block.
+  std::vector<float>& acc = scratch.accumulator;
+  acc.resize(ctx.channels * kBlockSamples * kOscillatorLanes);
   for (std::int64_t b = b0; b < b1; ++b) {
-    const std::int64_t blockStart = b * kBlockSamples, blockEnd = blockStart + kBlockSamples;
+    const std::int64_t blockStart = b * kBlockSamples;
+    const BlockSchedule& block = schedule[static_cast<std::size_t>(b - b0)];
+    if (block.full.empty() && block.masked.empty()) continue;  // silent: the output is already 0
     std::fill(acc.begin(), acc.end(), 0.0f);
-    for (SegmentVoice& sv : active) {
-      const Voice& v = *sv.voice;
-      if (b < v.firstBlock || b >= v.endBlock) continue;
-      if (!sv.started) {
-        sv.state = startVoice(v, sv.interp, sv.values, ctx);
-        // Catch up from birth to this block, by the same steps a continuous render takes.
-        while (sv.state.sample < blockStart) {
-          const std::int64_t boundary = (sv.state.sample / kBlockSamples + 1) * kBlockSamples;
-          advanceVoice(v, sv.state, boundary, sv.interp, sv.values, ctx);
-        }
-        sv.started = true;
-      }
-      next = sv.state;
-      advanceVoice(v, next, blockEnd, sv.interp, sv.values, ctx);
-      if (sv.state.sample > blockStart) {
-        loadLane(masked, maskedLanes++, v, sv.state, next, ctx);
-        if (maskedLanes == kOscillatorLanes) flush(masked, maskedLanes, true);
-      } else {
-        loadLane(full, fullLanes++, v, sv.state, next, ctx);
-        if (fullLanes == kOscillatorLanes) flush(full, fullLanes, false);
-      }
-      std::swap(sv.state, next);
-    }
-    flush(full, fullLanes, false);
-    flush(masked, maskedLanes, true);
-
+    const int lanes = std::max(accumulateLanes(block.full, false, ctx, acc.data()),
+                               accumulateLanes(block.masked, true, ctx, acc.data()));
     // Sum the lanes in a fixed order into the output.
-    const std::int64_t count = std::min(blockEnd, ctx.frames) - blockStart;
-    for (std::size_t l = 0; l < ctx.channels; ++l) {
-      const float* a = acc.data() + l * kBlockSamples * kOscillatorLanes;
-      float* o = out[l].data() + blockStart;
-      for (std::int64_t n = 0; n < count; ++n) {
-        float sum = 0.0f;
-        for (int lane = 0; lane < kOscillatorLanes; ++lane) sum += a[n * kOscillatorLanes + lane];
-        o[n] = sum;
-      }
-    }
+    float* channels[kMaxListeners];
+    for (std::size_t l = 0; l < ctx.channels; ++l) channels[l] = out[l].data() + blockStart;
+    sumOscillatorLanes(acc.data(), static_cast<int>(ctx.channels),
+                       static_cast<int>(std::min(blockStart + kBlockSamples, ctx.frames) - blockStart), channels,
+                       lanes);
   }
 }
 
@@ -264,55 +305,74 @@ SynthesisResult synthesize(const BubbleTrackSet& tracks, const SynthesisSettings
   const double fs = settings.sampleRate;
   const double nyquistAngular = std::numbers::pi * fs;
 
-  // Prepare every bubble (independent, so in parallel; each writes its own slot).
-  std::vector<Voice> prepared(tracks.bubbles.size());
-  tbb::parallel_for(std::size_t{0}, tracks.bubbles.size(),
-                    [&](std::size_t i) { prepared[i] = prepareVoice(tracks.bubbles[i], settings); });
+  // Order by first sample (ties in file order), so that each segment reads a contiguous run of
+  // voices; then prepare every bubble in its slot, in parallel.
+  const std::size_t count = tracks.bubbles.size();
+  std::vector<std::pair<std::int64_t, std::size_t>> order(count);
+  tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+    order[i] = {static_cast<std::int64_t>(std::ceil(tracks.bubbles[i].birth * fs)), i};
+  });
+  tbb::parallel_sort(order.begin(), order.end());  // keys are unique: the order is deterministic
+  // All track tables in one array, in render order.
+  std::vector<std::size_t> trackOffset(count + 1, 0);
+  for (std::size_t k = 0; k < count; ++k)
+    trackOffset[k + 1] = trackOffset[k] + TrackInterpolator::storageSize(tracks.bubbles[order[k].second], channels);
+  // Left uninitialised (every entry is written by its voice, in parallel): tens of MB for 10⁵ bubbles.
+  const std::unique_ptr<double[]> trackStorage(new double[trackOffset[count]]);
+  std::vector<Voice> voices(count);
+  std::vector<char> aliased(count);
+  std::vector<std::int64_t> clamped(count);
+  tbb::parallel_for(std::size_t{0}, count, [&](std::size_t k) {
+    const BubbleTrack& bubble = tracks.bubbles[order[k].second];
+    voices[k] = prepareVoice(bubble, channels,
+                             std::span(trackStorage.get() + trackOffset[k], trackStorage.get() + trackOffset[k + 1]),
+                             settings);
+    aliased[k] = peakAngularFrequency(voices[k], settings) >= nyquistAngular;
+    clamped[k] = std::count_if(bubble.track.begin(), bubble.track.end(), [&](const TrackSample& s) {
+      return s.depth < kMinimumDepthOverRadius * bubble.radius;
+    });
+  });
 
+  // Counts and the default duration.
   double lastEnd = 0.0;
-  std::vector<Voice> voices;
-  voices.reserve(prepared.size());
-  for (const Voice& v : prepared) {
-    for (const TrackSample& k : v.bubble->track)
-      if (k.depth < kMinimumDepthOverRadius * v.bubble->radius) ++report.depthsClamped;
-    if (peakAngularFrequency(v, settings) >= nyquistAngular) {
-      ++report.bubblesAboveNyquist;
-      continue;
-    }
-    lastEnd = std::max(lastEnd, v.bubble->birth + decayTime(v.oscillator.decayRate, settings.cutoffDecibels));
-    voices.push_back(v);
+  for (std::size_t k = 0; k < count; ++k) {
+    report.depthsClamped += clamped[k];
+    report.bubblesAboveNyquist += aliased[k];
+    if (!aliased[k]) lastEnd = std::max(lastEnd, voices[k].endTime);
   }
   const double duration = settings.duration.value_or(lastEnd);
   const auto frames = static_cast<std::int64_t>(std::ceil(duration * fs));
   report.frames = frames;
-  std::erase_if(voices, [&](const Voice& v) {
-    const bool silent = v.firstSample >= frames;
-    report.bubblesSilent += silent;
-    return silent;
-  });
-  report.bubblesRendered = static_cast<std::int64_t>(voices.size());
 
-  // Order by first block (stable: ties keep file order) for the segment windows.
-  std::vector<std::int64_t> order(voices.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::int64_t>(i);
-  std::stable_sort(order.begin(), order.end(), [&](std::int64_t a, std::int64_t b) {
-    return voices[a].firstBlock < voices[b].firstBlock;
-  });
+  // Drop the aliased and those born after the end (stable, so the order holds).
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (aliased[k]) continue;
+    if (voices[k].firstSample >= frames) {
+      ++report.bubblesSilent;
+      continue;
+    }
+    if (kept != k) voices[kept] = std::move(voices[k]);
+    ++kept;
+  }
+  voices.resize(kept);
+  report.bubblesRendered = static_cast<std::int64_t>(kept);
   std::int64_t maxLifetimeBlocks = 0;
-  const std::int64_t totalBlocks = (frames + kBlockSamples - 1) / kBlockSamples;
   for (const Voice& v : voices) {
     maxLifetimeBlocks = std::max(maxLifetimeBlocks, v.endBlock - v.firstBlock);
-    const std::int64_t end = std::min(v.endBlock * kBlockSamples, frames);
-    report.oscillatorSamples += std::max<std::int64_t>(0, end - v.firstSample);
+    // Counted to the cut-off time: the rest of the last block is computed but not credited.
+    report.oscillatorSamples += std::min(v.endSample, frames) - v.firstSample;
   }
 
   result.channels.assign(channels, std::vector<float>(static_cast<std::size_t>(frames)));
   const RenderContext ctx{settings, channels, 1.0 / fs, frames};
+  const std::int64_t totalBlocks = (frames + kBlockSamples - 1) / kBlockSamples;
   const std::int64_t segments = (totalBlocks + kSegmentBlocks - 1) / kSegmentBlocks;
+  tbb::enumerable_thread_specific<SegmentScratch> scratch;
   for (std::int64_t w0 = 0; w0 < segments; w0 += kSegmentsPerWave) {
     const std::int64_t w1 = std::min(w0 + kSegmentsPerWave, segments);
     tbb::parallel_for(w0, w1, [&](std::int64_t s) {
-      renderSegment(s, voices, order, maxLifetimeBlocks, ctx, result.channels);
+      renderSegment(s, voices, maxLifetimeBlocks, ctx, scratch.local(), result.channels);
     });
     if (progress) progress(static_cast<double>(w1) / static_cast<double>(segments));
   }

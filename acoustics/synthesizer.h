@@ -25,7 +25,7 @@ struct SynthesisSettings {
 
 /// What the render did, for the log and report.json.
 struct SynthesisReport {
-  std::int64_t oscillatorSamples = 0;   ///< Σ over rendered bubbles of samples evaluated
+  std::int64_t oscillatorSamples = 0;   ///< Σ over rendered bubbles of samples from birth to the cut-off
   std::int64_t bubblesRendered = 0;
   std::int64_t bubblesAboveNyquist = 0; ///< dropped: highest frequency ≥ sampleRate/2 (would alias)
   std::int64_t bubblesSilent = 0;       ///< dropped: born after the end of the clip

@@ -13,61 +13,83 @@ double monotoneTangent(double h0, double h1, double d0, double d1) {
   return 3.0 * (h0 + h1) / ((2.0 * h1 + h0) / d0 + (h1 + 2.0 * h0) / d1);
 }
 
-namespace {
-
-/// Tangent of one scalar quantity at knot k; zero at the first and last knot.
-template <typename ValueAt>
-double tangentAt(std::span<const TrackSample> s, std::size_t k, ValueAt value) {
-  if (k == 0 || k + 1 >= s.size()) return 0.0;
-  const double h0 = s[k].time - s[k - 1].time;
-  const double h1 = s[k + 1].time - s[k].time;
-  const double d0 = (value(s[k]) - value(s[k - 1])) / h0;
-  const double d1 = (value(s[k + 1]) - value(s[k])) / h1;
-  return monotoneTangent(h0, h1, d0, d1);
+std::size_t TrackInterpolator::storageSize(const BubbleTrack& bubble, std::size_t channels) {
+  return bubble.track.size() * (1 + 2 * (1 + channels));
 }
-
-/// Cubic Hermite on [t_k, t_k+1] with unit parameter u.
-template <typename ValueAt>
-double hermite(std::span<const TrackSample> s, std::size_t k, double u, ValueAt value) {
-  const double h = s[k + 1].time - s[k].time;
-  const double u2 = u * u, u3 = u2 * u;
-  const double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u;
-  const double h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
-  return h00 * value(s[k]) + h10 * h * tangentAt(s, k, value) + h01 * value(s[k + 1]) +
-         h11 * h * tangentAt(s, k + 1, value);
-}
-
-}  // namespace
 
 TrackInterpolator::TrackInterpolator(const BubbleTrack& bubble, std::size_t channels)
-    : bubble_(bubble), channels_(channels) {}
+    : channels_(channels), knots_(bubble.track.size()), owned_(storageSize(bubble, channels)) {
+  fill(bubble, owned_.data());
+}
+
+TrackInterpolator::TrackInterpolator(const BubbleTrack& bubble, std::size_t channels,
+                                     std::span<double> storage)
+    : channels_(channels), knots_(bubble.track.size()) {
+  fill(bubble, storage.data());
+}
+
+void TrackInterpolator::fill(const BubbleTrack& bubble, double* storage) {
+  const std::size_t width = 1 + channels_, channels = channels_;
+  data_ = storage;
+  double* time = storage;
+  double* values = time + knots_;
+  double* slopes = values + knots_ * width;
+  std::fill(slopes, slopes + knots_ * width, 0.0);  // tangents zero at both ends
+  for (std::size_t k = 0; k < knots_; ++k) {
+    const TrackSample& s = bubble.track[k];
+    time[k] = s.time;
+    values[k * width] = s.depth;
+    for (std::size_t c = 0; c < channels; ++c) values[k * width + 1 + c] = s.transfer[c];
+  }
+  for (std::size_t k = 1; k + 1 < knots_; ++k) {
+    const double h0 = time[k] - time[k - 1], h1 = time[k + 1] - time[k];
+    for (std::size_t q = 0; q < width; ++q) {
+      const double d0 = (values[k * width + q] - values[(k - 1) * width + q]) / h0;
+      const double d1 = (values[(k + 1) * width + q] - values[k * width + q]) / h1;
+      slopes[k * width + q] = monotoneTangent(h0, h1, d0, d1);
+    }
+  }
+}
 
 double TrackInterpolator::minimumDepth() const {
   double h = std::numeric_limits<double>::infinity();
-  for (const TrackSample& s : bubble_.track) h = std::min(h, s.depth);
+  const std::size_t width = 1 + channels_;
+  for (std::size_t k = 0; k < knots_; ++k) h = std::min(h, values()[k * width]);
   return h;
 }
 
-void TrackInterpolator::evaluate(double t, TrackValues& out) {
-  out.transfer.resize(channels_);
-  const std::span<const TrackSample> s(bubble_.track);
-  if (s.empty()) {
+TrackValues TrackInterpolator::evaluate(double t, std::size_t& cursor) const {
+  TrackValues out;
+  const std::size_t width = 1 + channels_;
+  if (knots_ == 0) {
     out.depth = std::numeric_limits<double>::infinity();
-    std::fill(out.transfer.begin(), out.transfer.end(), 1.0);
-    return;
+    std::fill(out.transfer.begin(), out.transfer.begin() + static_cast<std::ptrdiff_t>(channels_), 1.0);
+    return out;
   }
-  const auto hold = [&](const TrackSample& at) {
-    out.depth = at.depth;
-    for (std::size_t c = 0; c < channels_; ++c) out.transfer[c] = at.transfer[c];
+  const double* time = this->time();
+  const auto hold = [&](std::size_t k) {
+    const double* v = values() + k * width;
+    out.depth = v[0];
+    for (std::size_t c = 0; c < channels_; ++c) out.transfer[c] = v[1 + c];
+    return out;
   };
-  if (t <= s.front().time) return hold(s.front());
-  if (t >= s.back().time) return hold(s.back());
-  while (cursor_ + 2 < s.size() && s[cursor_ + 1].time <= t) ++cursor_;
-  const std::size_t k = cursor_;
-  const double u = (t - s[k].time) / (s[k + 1].time - s[k].time);
-  out.depth = hermite(s, k, u, [](const TrackSample& x) { return x.depth; });
-  for (std::size_t c = 0; c < channels_; ++c)
-    out.transfer[c] = hermite(s, k, u, [c](const TrackSample& x) { return x.transfer[c]; });
+  if (t <= time[0]) return hold(0);
+  if (t >= time[knots_ - 1]) return hold(knots_ - 1);
+  while (cursor + 2 < knots_ && time[cursor + 1] <= t) ++cursor;
+  const std::size_t k = cursor;
+  const double h = time[k + 1] - time[k];
+  const double u = (t - time[k]) / h, u2 = u * u, u3 = u2 * u;
+  // Cubic Hermite basis on the unit interval.
+  const double h00 = 2 * u3 - 3 * u2 + 1, h10 = (u3 - 2 * u2 + u) * h;
+  const double h01 = -2 * u3 + 3 * u2, h11 = (u3 - u2) * h;
+  const double* a = values() + k * width;
+  const double* b = a + width;
+  const double* ma = slopes() + k * width;
+  const double* mb = ma + width;
+  out.depth = h00 * a[0] + h10 * ma[0] + h01 * b[0] + h11 * mb[0];
+  for (std::size_t c = 1; c <= channels_; ++c)
+    out.transfer[c - 1] = h00 * a[c] + h10 * ma[c] + h01 * b[c] + h11 * mb[c];
+  return out;
 }
 
 }  // namespace fluidsound::acoustics

@@ -4,41 +4,68 @@
 // and a continuous first derivative (no zipper noise from frame-rate corners).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 #include "acoustics/bubble_track.h"
+#include "acoustics/oscillator_bank.h"
 
 namespace fluidsound::acoustics {
 
 /// Values of a track at one instant.
 struct TrackValues {
-  double depth = 0.0;            ///< h [m]
-  std::vector<double> transfer;  ///< per listener [-]
+  double depth = 0.0;                              ///< h [m]; +∞ for a bubble without a track
+  /// Per listener [-]; only the first `channels` entries are set (the rest are left
+  /// uninitialised on purpose: this is filled once per bubble and block, in the hot path).
+  std::array<double, kMaxListeners> transfer;
 };
 
-/// @brief Evaluates a bubble's track at times that only increase (a cursor remembers the interval).
-///        Before the first sample and after the last, the end values are held; tangents at the ends
-///        are zero, so holding is C¹-continuous and a track end makes no click.
+/// @brief A bubble's track prepared for evaluation at increasing times: the knot tangents are
+///        computed once. Before the first sample and after the last, the end values are held;
+///        tangents at the ends are zero, so holding is C¹-continuous and a track end makes no click.
 class TrackInterpolator {
  public:
   /// @param bubble    the bubble; its track may be empty (deep, transfer 1 on every channel)
-  /// @param channels  number of listeners
+  /// @param channels  number of listeners, ≤ kMaxListeners
   TrackInterpolator(const BubbleTrack& bubble, std::size_t channels);
 
-  /// @brief Values at time t [s]; t must not decrease between calls.
-  /// @param out  receives depth and one transfer per channel (resized as needed)
-  void evaluate(double t, TrackValues& out);
+  /// @brief The same, keeping its tables in `storage` (storageSize(bubble, channels) doubles,
+  ///        owned by the caller and outliving this object): many bubbles then share one
+  ///        allocation, laid out in the order they are rendered.
+  TrackInterpolator(const BubbleTrack& bubble, std::size_t channels, std::span<double> storage);
+
+  /// Doubles of storage the tables of `bubble` need.
+  static std::size_t storageSize(const BubbleTrack& bubble, std::size_t channels);
+
+  /// An empty track on no channel (a placeholder to assign to).
+  TrackInterpolator() = default;
+  TrackInterpolator(TrackInterpolator&&) noexcept = default;
+  TrackInterpolator& operator=(TrackInterpolator&&) noexcept = default;
+  TrackInterpolator(const TrackInterpolator&) = delete;
+  TrackInterpolator& operator=(const TrackInterpolator&) = delete;
+
+  /// @brief Values at time t [s].
+  /// @param cursor  interval index remembered between calls (start at 0); t must not decrease
+  ///                between calls that share a cursor
+  TrackValues evaluate(double t, std::size_t& cursor) const;
 
   /// @brief Smallest depth over the track's samples [m] (+∞ without a track). The interpolant is
   ///        monotone between samples, so no interpolated depth is smaller.
   double minimumDepth() const;
 
  private:
-  const BubbleTrack& bubble_;
-  std::size_t channels_;
-  std::size_t cursor_ = 0;  ///< index k of the interval [t_k, t_{k+1}] last used
+  std::size_t channels_ = 0;
+  std::size_t knots_ = 0;
+  /// Tables: knot times [s]; then per knot depth [m] and one transfer per channel; then per knot
+  /// the tangents of the same quantities [1/s]. In owned_ or in the caller's storage.
+  std::vector<double> owned_;
+  const double* data_ = nullptr;
+  void fill(const BubbleTrack& bubble, double* storage);
+  const double* time() const { return data_; }
+  const double* values() const { return data_ + knots_; }
+  const double* slopes() const { return data_ + knots_ * (2 + channels_); }
 };
 
 /// @brief Fritsch–Butland tangent at an interior knot from its two neighbouring secants:

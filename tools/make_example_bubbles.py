@@ -27,6 +27,8 @@ channel, duration by default until it has decayed by 90 dB): the simplest input 
 
 Deterministic: random.Random(1); numbers rounded to 6 significant digits. Standard library only.
 Usage: /usr/bin/python3 tools/make_example_bubbles.py [--out DIR]   (default DIR: <repo>/scenes)
+       /usr/bin/python3 tools/make_example_bubbles.py --pour-file F --pour-end 60 --peak-rate 2000
+         (a longer, denser pour only, e.g. for tools/bench.sh's 60-second memory measurement)
 """
 
 import argparse
@@ -151,22 +153,28 @@ def write_atomically(path, text):
 
 
 def main():
+    global BIRTH_END, PEAK_RATE  # the process model's two knobs, set once from the command line
     repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parser = argparse.ArgumentParser(description="Write the example fluidsound.bubbles/1 files.")
     parser.add_argument("--out", default=os.path.join(repo, "scenes"), help="output folder")
+    parser.add_argument("--pour-file", help="write only the pour, to this file")
+    parser.add_argument("--pour-end", type=float, default=BIRTH_END, help="last birth [s]")
+    parser.add_argument("--peak-rate", type=float, default=PEAK_RATE, help="steady births per second")
     args = parser.parse_args()
+    BIRTH_END, PEAK_RATE = args.pour_end, args.peak_rate
 
     rng = random.Random(SEED)
     bubbles = [pour_bubble(rng, birth) for birth in birth_times(rng)]
-    pour = os.path.join(args.out, "pour.bubbles.json")
+    pour = args.pour_file or os.path.join(args.out, "pour.bubbles.json")
     write_atomically(pour, document_text(
-        {"format": "fluidsound.bubbles/1", "sample_rate": int(SAMPLE_RATE), "duration": DURATION,
-         "listeners": LISTENERS}, bubbles))
+        {"format": "fluidsound.bubbles/1", "sample_rate": int(SAMPLE_RATE),
+         "duration": BIRTH_END + DURATION - 3.0, "listeners": LISTENERS}, bubbles))
 
     single = os.path.join(args.out, "single-bubble.bubbles.json")
-    write_atomically(single, document_text(
-        {"format": "fluidsound.bubbles/1", "sample_rate": int(SAMPLE_RATE)},
-        [{"radius": 0.001, "birth": 0.05}]))
+    if not args.pour_file:
+        write_atomically(single, document_text(
+            {"format": "fluidsound.bubbles/1", "sample_rate": int(SAMPLE_RATE)},
+            [{"radius": 0.001, "birth": 0.05}]))
 
     radii = [b["radius"] for b in bubbles]
     samples = sum(len(b["track"]) for b in bubbles)
@@ -175,7 +183,8 @@ def main():
           f"{bubbles[-1]['birth']:.3f} s, radii {min(radii) * 1e3:.3f}-{max(radii) * 1e3:.3f} mm "
           f"({100.0 * below / len(radii):.1f} % below a_H), {samples} track samples, "
           f"{os.path.getsize(pour) / 1024:.1f} KB")
-    print(f"{single}: 1 bubble, {os.path.getsize(single)} bytes")
+    if not args.pour_file:
+        print(f"{single}: 1 bubble, {os.path.getsize(single)} bytes")
 
 
 if __name__ == "__main__":

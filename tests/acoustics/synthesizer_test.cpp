@@ -68,14 +68,14 @@ struct TrackInterpolatorReference {
   TrackInterpolatorReference(const BubbleTrack& b, const OscillatorConstants& c)
       : bubble(b), constants(c), interp(b, 1) {}
   std::pair<double, double> at(double t) const {
-    interp.evaluate(t, values);
+    const TrackValues values = interp.evaluate(t, cursor);
     const double w = constants.angularFrequency * freeSurfaceFrequencyRatio(bubble.radius, values.depth);
     return {values.transfer[0], std::sqrt(w * w - constants.decayRate * constants.decayRate)};
   }
   const BubbleTrack& bubble;
   OscillatorConstants constants;
-  mutable TrackInterpolator interp;
-  mutable TrackValues values;
+  TrackInterpolator interp;
+  mutable std::size_t cursor = 0;
 };
 
 class DeepBubble : public ::testing::TestWithParam<double> {};

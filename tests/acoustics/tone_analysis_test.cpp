@@ -154,8 +154,8 @@ TEST(FftPeakFrequency, MatchesT2aFrequencyWithin0002PercentInFloat32) {
 
 TEST(FftPeakFrequency, MatchesT2aFrequencyWithin0002PercentInPcm16) {
   // Claim: as above for 16-bit PCM at −0.9 dBFS. Tolerance 0.002 %: T8's pcm16 worst case is
-  // 0.0018 % (13 kHz, whose decay reaches the quantisation floor within ~4 ms, so the spectrum's
-  // peak stands only ~20 dB above the quantisation noise spread over the whole record).
+  // 0.0018 %. Undithered rounding adds an error correlated with the tone; it moves the vertex most
+  // for the 13 kHz tone, whose spectral peak is the broadest (half-width β/2π ≈ 400 Hz).
   constexpr double kTolerance = 0.002e-2;
   WorstError worst("FFT-peak f (pcm16)");
   for (const ToneCase& c : t2aGrid(SampleFormat::Pcm16)) {
@@ -277,8 +277,8 @@ TEST(HilbertDecayRate, RecoversT2aDecayWithin025PercentInFloat32) {
   // Claim: the padded, contiguous, top-30-dB envelope fit (§8 item 3) measures β for either
   // onset. Reference: the analytic β. Tolerance 0.25 % (§8, T8's worst case 0.240 %, a quarter of
   // the 1 % validation budget). The worst case is the 0.25 mm bubble at 44.1 kHz: 3.35 samples
-  // per cycle and a 37-sample fit window, across which the discrete Hilbert transform's onset
-  // tail (∝ 1/t, strongest near fs/2) leaves a ripple on ln(envelope) that does not average out.
+  // per cycle and a 37-sample fit window, across which the Hilbert transform's tail from the
+  // abrupt onset (∝ 1/t) ripples the envelope by ~10 %, too few cycles for it to average out.
   constexpr double kTolerance = 0.25e-2;
   WorstError worst("Hilbert β (float32)");
   for (const ToneCase& c : t2aGrid(SampleFormat::Float32)) {
@@ -290,7 +290,7 @@ TEST(HilbertDecayRate, RecoversT2aDecayWithin025PercentInFloat32) {
 
 TEST(HilbertDecayRate, RecoversT2aDecayWithin025PercentInPcm16) {
   // Claim: as above for 16-bit PCM at −0.9 dBFS. Tolerance 0.25 % (T8: 0.240 % for pcm16 too):
-  // the fit stops 30 dB down, ~60 dB above the quantisation floor, so rounding adds ≪ 0.01 %.
+  // the fit stops 30 dB down, ~65 dB above the rounding error, which moves β by ≲ 0.01 %.
   constexpr double kTolerance = 0.25e-2;
   WorstError worst("Hilbert β (pcm16)");
   for (const ToneCase& c : t2aGrid(SampleFormat::Pcm16)) {
@@ -301,12 +301,13 @@ TEST(HilbertDecayRate, RecoversT2aDecayWithin025PercentInPcm16) {
 }
 
 TEST(HilbertDecayRate, IsImmuneToTheWrappedOnsetOfSineOnsetLowTones) {
-  // Claim: padding by N on both sides keeps the onset transient of a sin-onset tone from
-  // wrapping onto the end of the record (§8 pitfall). Tones of §8: e^(−βt)·sin(2πft), 0.55 s,
-  // float32, 48 kHz, 1628 Hz / β = 260 /s and 816 Hz / β = 150 /s; a naive unpadded fit gives
-  // 3.6 and 3.4 /s. Reference: the analytic β. Tolerance 0.25 % as for the T2a tones (§8).
-  // The naive estimate is computed too: if it were not far off, this tone would not exercise the
-  // pitfall and the test would prove nothing.
+  // Claim: the robust estimator is immune to §8's pitfall, the onset transient of a sin-onset
+  // low tone wrapping onto the end of the record. Tones of §8: e^(−βt)·sin(2πft), 0.55 s,
+  // float32, 48 kHz, 1628 Hz / β = 260 /s and 816 Hz / β = 150 /s; a naive unpadded fit over every
+  // sample above −40 dB gives 3.6 and 3.4 /s. Reference: the analytic β. Tolerance 0.25 % as for
+  // the T2a tones (§8). It is the contiguous fit run that this tolerance checks: padding with a
+  // non-contiguous fit gives −0.6 %. The naive estimate is computed too: if it were not far off,
+  // this tone would not exercise the pitfall and the test would prove nothing.
   constexpr double kTolerance = 0.25e-2;
   constexpr double kSampleRate = 48000.0;
   constexpr double kDuration = 0.55;

@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -19,16 +20,21 @@ using namespace fluidsound::acoustics;
 
 /// `count` bubbles born uniformly over `span` seconds, radii log-uniform in 0.5–4 mm, each rising
 /// from 5–40 mm deep to 1.6 R over 0.2 s (7 frames at 30 fps), transfer changing on both channels.
+/// Bubbles are listed in order of birth, as the simulation writes them (and as they are built
+/// here, so their tracks lie in memory in that order, as after reading a file).
 BubbleTrackSet movingBubbles(std::size_t count, double span) {
   BubbleTrackSet set;
   set.listeners = {"left", "right"};
   std::mt19937_64 random(1);
   std::uniform_real_distribution<double> birth(0.0, span), logRadius(std::log(0.5e-3), std::log(4e-3)),
       depth(5e-3, 40e-3), pan(0.6, 1.0);
+  std::vector<double> births(count);
+  for (double& t : births) t = birth(random);
+  std::sort(births.begin(), births.end());
   for (std::size_t i = 0; i < count; ++i) {
     BubbleTrack b;
     b.radius = std::exp(logRadius(random));
-    b.birth = birth(random);
+    b.birth = births[i];
     const double h0 = depth(random), p = pan(random);
     for (int k = 0; k < 7; ++k) {
       const double u = k / 6.0;
