@@ -65,6 +65,11 @@ int runSynthCommand(const SynthOptions& o) {
   io::requireWritableFolder(reportPath);
   if (!o.spectrogram.empty()) io::requireWritableFolder(o.spectrogram);
 
+  std::error_code sizeError;
+  const auto inputBytes = std::filesystem::file_size(o.input, sizeError);
+  constexpr std::uintmax_t kAnnounceReadBytes = 8u << 20;  // a read that takes about a second
+  if (!sizeError && inputBytes > kAnnounceReadBytes)
+    note(o, "reading " + o.input + " (" + std::to_string(inputBytes >> 20) + " MB)");
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(o.input);
   if (tracks.channelCount() > static_cast<std::size_t>(acoustics::kMaxListeners))
     throw io::InputError(o.input, "listeners", "at most " + std::to_string(acoustics::kMaxListeners) +
