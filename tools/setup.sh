@@ -11,7 +11,8 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev
-  libkissfft-dev libcairo2-dev
+  libcairo2-dev
+  python3 time        # tools/make_example_bubbles.py and tools/bench.sh only
 )
 
 missing=()

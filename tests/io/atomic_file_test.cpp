@@ -14,42 +14,14 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "support/temp_folder.h"
 
 namespace fluidsound::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh folder under the system's temporary folder, removed with everything in it.
-class TempFolder {
- public:
-  TempFolder() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::random_device entropy;
-    path_ = fs::temp_directory_path() / ("fluidsound-io-" + std::string(test->test_suite_name()) +
-                                         "-" + test->name() + "-" + std::to_string(entropy()));
-    fs::create_directories(path_);
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ignored);
-    fs::remove_all(path_, ignored);
-  }
-  TempFolder(const TempFolder&) = delete;
-  TempFolder& operator=(const TempFolder&) = delete;
-
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(path_))
-      names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  fs::path path_;
-};
+using test::TempFolder;
 
 void writeText(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "support/temp_folder.h"
 
 namespace fluidsound::io {
 namespace {
@@ -28,35 +29,7 @@ using acoustics::BubbleTrackSet;
 using acoustics::TrackSample;
 using nlohmann::json;
 
-/// A fresh folder under the system's temporary folder, removed with everything in it.
-class TempFolder {
- public:
-  TempFolder() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::random_device entropy;
-    path_ = fs::temp_directory_path() / ("fluidsound-io-" + std::string(test->test_suite_name()) +
-                                         "-" + test->name() + "-" + std::to_string(entropy()));
-    fs::create_directories(path_);
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TempFolder(const TempFolder&) = delete;
-  TempFolder& operator=(const TempFolder&) = delete;
-
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(path_))
-      names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  fs::path path_;
-};
+using test::TempFolder;
 
 /// The example of DESIGN.md, plus a second bubble without a track but with an amplitude.
 json designExample() {
