@@ -75,8 +75,9 @@ AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
 
   // Creating the temporary file now (exclusively, "x") is the real test that the folder is
   // writable, and reserves the name. fopen gives the usual permissions (0666 minus umask).
-  const std::string prefix =
-      "." + target_.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-";
+  // Built by append: g++ 12 warns falsely (-Wrestrict, GCC bug 105329) on "literal" + string&&.
+  std::string prefix(1, '.');
+  prefix.append(target_.filename().string()).append(".tmp-").append(std::to_string(::getpid())).append("-");
   for (int attempt = 0; attempt < kMaxNameAttempts; ++attempt) {
     const fs::path candidate = folder / (prefix + hex(uniqueSuffix(this)));
     if (std::FILE* file = std::fopen(candidate.c_str(), "wx")) {

@@ -8,6 +8,7 @@
 
 #include "io/input_error.h"
 #include "tools/run_report.h"
+#include "tools/simulate_command.h"
 #include "tools/spectrogram_command.h"
 #include "tools/synth_command.h"
 #include "tools/validate_command.h"
@@ -35,9 +36,11 @@ int main(int argc, char** argv) {
   SynthOptions synth;
   SpectrogramOptions spectrogram;
   ValidateOptions validate;
+  SimulateOptions simulate;
   CLI::App* synthCommand = addSynthCommand(app, synth);
   CLI::App* spectrogramCommand = addSpectrogramCommand(app, spectrogram);
   CLI::App* validateCommand = addValidateCommand(app, validate);
+  CLI::App* simulateCommand = addSimulateCommand(app, simulate);
 
   try {
     app.parse(argc, argv);
@@ -57,9 +60,14 @@ int main(int argc, char** argv) {
       return runWithThreads(spectrogram.common.threads, [&] { return runSpectrogramCommand(spectrogram); });
     if (validateCommand->parsed())
       return runWithThreads(validate.common.threads, [&] { return runValidateCommand(validate); });
+    if (simulateCommand->parsed())
+      return runWithThreads(simulate.common.threads, [&] { return runSimulateCommand(simulate); });
   } catch (const fluidsound::io::InputError& e) {
     std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
     return kExitBadInput;
+  } catch (const CLI::ValidationError& e) {
+    std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
+    return kExitUsage;
   } catch (const fluidsound::io::OutputError& e) {
     std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
     return kExitOutputFailed;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "support/input_error_expectations.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::io {
@@ -49,24 +50,12 @@ json designExample() {
 
 /// The InputError that parsing `text` as drip.json throws (a test failure if none).
 InputError parseError(const std::string& text) {
-  try {
-    parseBubbleTracks(text, "drip.json");
-  } catch (const InputError& error) {
-    return error;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("", "", "");
+  return test::inputErrorOf([](const std::string& t) { parseBubbleTracks(t, "drip.json"); }, text);
 }
 
-/// The error names the file, exactly `field`, and contains `expected` after "expected ".
+/// The error is one line that names drip.json, exactly `field`, and contains `expected`.
 void expectError(const InputError& error, const std::string& field, const std::string& expected) {
-  const std::string message = error.what();
-  EXPECT_EQ(error.file(), "drip.json") << message;
-  EXPECT_EQ(error.field(), field) << message;
-  const std::string head = "drip.json: " + (field.empty() ? "" : field + ": ") + "expected ";
-  EXPECT_TRUE(message.starts_with(head)) << message << "\n does not start with: " << head;
-  EXPECT_NE(message.find(expected), std::string::npos) << message << "\n lacks: " << expected;
-  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  test::expectInputError(error, "drip.json", field, expected, test::ExpectedAt::Anywhere);
 }
 
 // ---- valid input --------------------------------------------------------------------------------

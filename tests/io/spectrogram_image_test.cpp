@@ -270,6 +270,9 @@ TEST_F(SpectrogramImage, ReadOnlyFolderThrowsOutputErrorAndLeavesNoFile) {
 TEST_F(SpectrogramImage, FullDiskThrowsOutputErrorAndLeavesNoFile) {
   // A full disk, simulated in a child process (a death test) by a limit on file size: the
   // temporary file is created, then writing the PNG into it fails. Works as root too.
+  // "threadsafe": the child re-executes the test binary instead of forking a process that may
+  // hold other tests' worker threads (TBB), which can deadlock a forked child.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(writeWithFileSizeLimit(folder_), ::testing::ExitedWithCode(0), "");
 }
 

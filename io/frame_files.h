@@ -1,0 +1,34 @@
+// io/frame_files.h — the per-frame artefacts of the simulation (DESIGN.md): frames/NNNN.vdb with
+// the liquid level set `surface` (narrow band, negative inside) and `velocity` (cell centres), and
+// frames/NNNN.ply with the particles (binary little-endian, float x y z vx vy vz). Both written
+// atomically, readable by Houdini, Blender and OpenVDB's tools.
+#pragma once
+
+#include <filesystem>
+
+#include "sim/grid.h"
+#include "sim/mac_velocity.h"
+#include "sim/particles.h"
+
+namespace fluidsound::io {
+
+/// Settings of the level set built from the particles.
+struct SurfaceSettings {
+  double particleRadius = 0.0;  ///< r [m]; the surface is the union of particle spheres, smoothed
+  int halfWidthVoxels = 3;      ///< narrow-band half width [voxels]
+  int smoothingIterations = 1;  ///< mean-value filter passes over the band (0: none)
+};
+
+/// @brief Builds the surface (OpenVDB ParticlesToLevelSet on the solver's cell size, then a
+///        smoothing filter) and the cell-centred velocity, and writes both to `path`.
+/// @throws OutputError if the file cannot be written
+void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& grid,
+                   const sim::Particles& particles, const sim::MacVelocity& velocity,
+                   const SurfaceSettings& surface);
+
+/// @brief Writes the particles as a binary little-endian PLY: one vertex per particle with float
+///        properties x y z vx vy vz.
+/// @throws OutputError if the file cannot be written
+void writeParticlesPly(const std::filesystem::path& path, const sim::Particles& particles);
+
+}  // namespace fluidsound::io

@@ -1,0 +1,308 @@
+// io/scene_file.cpp — `fluidsound.scene/1` (docs/scene.md): JSON through nlohmann-json,
+// validated field by field into sim::Scene; the liquid, emitters and solids in scene_shapes.cpp.
+#include "io/scene_file.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "io/json_validation.h"
+#include "io/scene_shapes.h"
+
+namespace fluidsound::io {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr std::string_view kFormatTag = "fluidsound.scene/1";
+
+/// A scene has no extension keys (a typo must not pass); unknown-key errors say "found an
+/// unknown key" and also suggest a known key sharing the first 4 characters.
+constexpr KeyRules kSceneKeyRules{
+    .allowExtensionKeys = false, .matchSharedStart = true, .unknownKeyFound = "an unknown key"};
+
+/// Each domain extent must be a whole number of cells to this relative tolerance: decimal
+/// inputs are not exact in binary (0.4 / 0.008 = 50.000000000000007).
+constexpr double kWholeCellTolerance = 1e-6;
+/// Cells per axis: at least 2 (an interior for the pressure solve); at most 1024 (a dense
+/// 1024³ grid already needs tens of GB; a larger count is a typo in `cell`).
+constexpr double kMinCellsPerAxis = 2;
+constexpr double kMaxCellsPerAxis = 1024;
+/// Output sample rates [Hz]: the range of `fluidsound synth --rate` (docs/cli.md).
+constexpr std::uint64_t kMinSampleRate = 8000;
+constexpr std::uint64_t kMaxSampleRate = 768000;
+/// Loosest relative residual for the pressure solve: beyond it the liquid visibly loses volume.
+constexpr double kMaxPressureTolerance = 1e-2;
+constexpr std::uint64_t kMaxParticlesPerCell = 64;
+/// Height of the default listener above the domain centre [m] (DESIGN.md).
+constexpr double kDefaultListenerHeight = 0.5;
+
+/// Face names in the order of sim::Domain::open.
+constexpr std::array<std::string_view, 6> kFaceNames = {"-x", "+x", "-y", "+y", "-z", "+z"};
+constexpr std::array<std::string_view, 3> kAxisNames = {"x", "y", "z"};
+
+/// A number rounded to `digits` significant digits, for derived values in messages.
+std::string roundedNumber(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
+}
+
+// ---- the validating reader ----------------------------------------------------------------------
+
+/// Turns a parsed JSON document into a sim::Scene, or throws InputError at the first problem.
+class SceneReader {
+ public:
+  SceneReader(const std::string& fileName, fs::path folder)
+      : check_(fileName, kSceneKeyRules), folder_(std::move(folder)) {}
+
+  sim::Scene read(const json& root) const {
+    check_.requireFormat(root, kFormatTag);
+    check_.rejectUnknownKeys(root, "",
+                             {"format", "domain", "gravity", "time", "seed", "liquid", "emitters",
+                              "solids", "listeners", "audio", "solver"});
+
+    sim::Scene scene;
+    scene.domain =
+        domain(check_.requiredObject(root, "", "domain", "an object with min, max and cell"));
+    if (const json* gravity = findMember(root, "gravity"))
+      scene.gravity = check_.vector(*gravity, "gravity", "m/s^2");
+    scene.time = time(check_.requiredObject(root, "", "time", "an object with duration (seconds)"));
+    if (const json* seed = findMember(root, "seed")) {
+      scene.seed = check_.wholeNumber(*seed, "seed", "an integer >= 0", 0,
+                                      std::numeric_limits<std::uint64_t>::max());
+    }
+    if (const json* items =
+            check_.optionalArray(root, "", "liquid", "an array of liquid regions")) {
+      for (std::size_t i = 0; i < items->size(); ++i) {
+        scene.liquid.push_back(
+            readLiquidRegion(check_, (*items)[i], elementPath("liquid", i), folder_));
+      }
+    }
+    if (const json* items = check_.optionalArray(root, "", "emitters", "an array of emitters")) {
+      for (std::size_t i = 0; i < items->size(); ++i) {
+        scene.emitters.push_back(
+            readEmitter(check_, (*items)[i], elementPath("emitters", i), scene.time));
+      }
+    }
+    if (const json* items = check_.optionalArray(root, "", "solids", "an array of solids")) {
+      for (std::size_t i = 0; i < items->size(); ++i)
+        scene.solids.push_back(readSolid(check_, (*items)[i], elementPath("solids", i), folder_));
+    }
+    scene.listeners = listeners(root, scene.domain);
+    if (const json* audio =
+            check_.optionalObject(root, "", "audio", "an object with sample_rate (Hz)")) {
+      check_.rejectUnknownKeys(*audio, "audio", {"sample_rate"});
+      if (const json* rate = findMember(*audio, "sample_rate")) {
+        scene.sampleRate = static_cast<double>(
+            check_.wholeNumber(*rate, "audio.sample_rate", "an integer from 8000 to 768000 (Hz)",
+                               kMinSampleRate, kMaxSampleRate));
+      }
+    }
+    if (const json* solver =
+            check_.optionalObject(root, "", "solver", "an object of solver settings"))
+      scene.solver = solverSettings(*solver);
+    return scene;
+  }
+
+ private:
+  // ---- domain, time ----------------------------------------------------------------------------
+
+  sim::Domain domain(const json& object) const {
+    const std::string path = "domain";
+    check_.rejectUnknownKeys(object, path, {"min", "max", "cell", "open"});
+    sim::Domain d;
+    d.min = check_.requiredVector(object, path, "min", "metres");
+    d.max = check_.requiredVector(object, path, "max", "metres");
+    requireOrdered(check_, object, path, d.min, d.max);
+    d.cell = check_.requiredNumber(object, path, "cell", "a number > 0 (metres)", positive);
+    requireWholeCellCounts(d, object["cell"]);
+    if (const json* open = findMember(object, "open")) d.open = openFaces(*open, "domain.open");
+    return d;
+  }
+
+  /// 2 … 1024 cells per axis, each extent a whole number of cells (within kWholeCellTolerance).
+  void requireWholeCellCounts(const sim::Domain& d, const json& cell) const {
+    const std::string path = "domain.cell";
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double cells = (d.max[a] - d.min[a]) / d.cell;
+      if (!(cells >= kMinCellsPerAxis - 0.5 && cells < kMaxCellsPerAxis + 0.5)) {
+        check_.fail(path, "a cell size (metres) giving 2 to 1024 cells per axis",
+                    describe(cell) + " (" + roundedNumber(cells, 6) +
+                        (cells == 1 ? " cell" : " cells") + " along " + std::string(kAxisNames[a]) +
+                        ")");
+      }
+    }
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double extent = d.max[a] - d.min[a];
+      const double cells = extent / d.cell;
+      const double nearest = std::round(cells);
+      if (std::abs(cells - nearest) > kWholeCellTolerance * nearest) {
+        check_.fail(
+            path,
+            "a cell size (metres) that divides the extent along " + std::string(kAxisNames[a]) +
+                " (" + formatNumber(extent) + " m) into a whole number of cells, such as " +
+                roundedNumber(extent / nearest, 10) + " (" + roundedNumber(nearest, 10) + " cells)",
+            describe(cell) + " (" + roundedNumber(cells, 6) + " cells)");
+      }
+    }
+  }
+
+  std::array<bool, 6> openFaces(const json& value, const std::string& path) const {
+    std::string names;
+    for (std::string_view face : kFaceNames)
+      names += (names.empty() ? "" : ", ") + quotedText(face);
+    if (!value.is_array())
+      check_.fail(path, "an array of face names from " + names, describe(value));
+    std::array<bool, 6> open{};
+    std::array<std::size_t, 6> listedAt{};
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      const json& item = value[i];
+      const std::string itemPath = elementPath(path, i);
+      if (!item.is_string()) check_.fail(itemPath, "one of " + names, describe(item));
+      const auto face = std::find(kFaceNames.begin(), kFaceNames.end(), item.get<std::string>());
+      if (face == kFaceNames.end()) check_.fail(itemPath, "one of " + names, describe(item));
+      const auto f = static_cast<std::size_t>(face - kFaceNames.begin());
+      if (open[f]) {
+        check_.fail(itemPath,
+                    "a face not listed before (" + elementPath(path, listedAt[f]) + " is " +
+                        quotedText(*face) + ")",
+                    describe(item));
+      }
+      open[f] = true;
+      listedAt[f] = i;
+    }
+    return open;
+  }
+
+  sim::TimeSettings time(const json& object) const {
+    const std::string path = "time";
+    check_.rejectUnknownKeys(object, path, {"duration", "fps", "cfl"});
+    sim::TimeSettings t;
+    t.duration =
+        check_.requiredNumber(object, path, "duration", "a number > 0 (seconds)", positive);
+    t.fps = check_.optionalNumber(object, path, "fps", t.fps, "a number > 0 (frames per second)",
+                                  positive);
+    t.cfl = check_.optionalNumber(object, path, "cfl", t.cfl, "a number > 0 (cells per substep)",
+                                  positive);
+    return t;
+  }
+
+  // ---- listeners, solver ----------------------------------------------------------------------
+
+  std::vector<sim::Listener> listeners(const json& root, const sim::Domain& domain) const {
+    const std::string expected = "an array of 1 or more listeners {name, position}";
+    const json* items = check_.optionalArray(root, "", "listeners", expected);
+    if (items == nullptr) {  // DESIGN.md: one listener 0.5 m above the domain centre
+      sim::Listener listener{"listener", {}};
+      for (std::size_t a = 0; a < 3; ++a)
+        listener.position[a] = 0.5 * (domain.min[a] + domain.max[a]);
+      listener.position[1] += kDefaultListenerHeight;
+      return {listener};
+    }
+    if (items->empty())
+      check_.fail("listeners", expected + " (omit it for the default)", "an empty array");
+    std::vector<sim::Listener> out;
+    for (std::size_t i = 0; i < items->size(); ++i) {
+      const json& item = (*items)[i];
+      const std::string path = elementPath("listeners", i);
+      check_.requireObject(item, path, "an object with name and position");
+      check_.rejectUnknownKeys(item, path, {"name", "position"});
+      sim::Listener listener;
+      const std::string namePath = memberPath(path, "name");
+      const std::string nameExpected = "a non-empty string (the channel's name)";
+      const json* name = findMember(item, "name");
+      if (name == nullptr) check_.fail(namePath, nameExpected, std::string(kMissing));
+      listener.name = check_.nonEmptyText(*name, namePath, nameExpected);
+      for (std::size_t k = 0; k < out.size(); ++k) {
+        if (out[k].name == listener.name) {
+          check_.fail(namePath,
+                      "a name not used by another listener (" + elementPath("listeners", k) +
+                          ".name is the same)",
+                      describe(*name));
+        }
+      }
+      listener.position = check_.requiredVector(item, path, "position", "metres");
+      out.push_back(std::move(listener));
+    }
+    return out;
+  }
+
+  sim::SolverSettings solverSettings(const json& object) const {
+    const std::string path = "solver";
+    check_.rejectUnknownKeys(object, path,
+                             {"transfer", "flip_ratio", "particles_per_cell", "pressure_tolerance",
+                              "max_pressure_iterations"});
+    sim::SolverSettings s;
+    if (const json* transfer = findMember(object, "transfer")) {
+      const std::string transferPath = memberPath(path, "transfer");
+      std::string expected = R"("apic" or "flip")";
+      if (transfer->is_string()) {
+        const std::string& text = transfer->get_ref<const std::string&>();
+        if (text == "apic") {
+          s.transfer = sim::TransferScheme::Apic;
+        } else if (text == "flip") {
+          s.transfer = sim::TransferScheme::Flip;
+        } else {
+          const std::string suggestion =
+              closestKey(text, {"apic", "flip"}, kSceneKeyRules.matchSharedStart);
+          if (normalizedKey(text) == "pic") {  // not a typo of "apic": PIC is FLIP at ratio 0
+            expected += R"( (PIC is "flip" with flip_ratio 0))";
+          } else if (!suggestion.empty()) {
+            expected += " (did you mean " + quotedText(suggestion) + "?)";
+          }
+          check_.fail(transferPath, expected, describe(*transfer));
+        }
+      } else {
+        check_.fail(transferPath, expected, describe(*transfer));
+      }
+    }
+    s.flipRatio = check_.optionalNumber(object, path, "flip_ratio", s.flipRatio,
+                                        "a number from 0 to 1 (FLIP share of the FLIP/PIC blend)",
+                                        [](double v) { return v >= 0 && v <= 1; });
+    if (const json* perCell = findMember(object, "particles_per_cell")) {
+      s.particlesPerCell =
+          static_cast<int>(check_.wholeNumber(*perCell, memberPath(path, "particles_per_cell"),
+                                              "an integer from 1 to 64", 1, kMaxParticlesPerCell));
+    }
+    s.pressureTolerance =
+        check_.optionalNumber(object, path, "pressure_tolerance", s.pressureTolerance,
+                              "a number > 0 and <= 0.01 (relative residual)",
+                              [](double v) { return v > 0 && v <= kMaxPressureTolerance; });
+    if (const json* iterations = findMember(object, "max_pressure_iterations")) {
+      s.maxPressureIterations = static_cast<int>(
+          check_.wholeNumber(*iterations, memberPath(path, "max_pressure_iterations"),
+                             "an integer from 1 to 2147483647", 1,
+                             static_cast<std::uint64_t>(std::numeric_limits<int>::max())));
+    }
+    return s;
+  }
+
+  JsonValidator check_;
+  fs::path folder_;
+};
+
+}  // namespace
+
+sim::Scene parseScene(std::string_view text, const std::filesystem::path& file) {
+  const std::string name = file.string();
+  const json root = parseJson(text, name, DuplicateKeys::Rejected);
+  sim::Scene scene = SceneReader(name, file.parent_path()).read(root);
+  scene.file = file;
+  return scene;
+}
+
+sim::Scene readScene(const std::filesystem::path& path) {
+  return parseScene(readInputFile(path), path);
+}
+
+}  // namespace fluidsound::io

@@ -1,0 +1,169 @@
+// sim/fluid_solver.cpp — see fluid_solver.h.
+#include "sim/fluid_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include "sim/liquid_surface.h"
+#include "sim/particle_advection.h"
+#include "sim/particle_seeding.h"
+#include "sim/particle_transfer.h"
+#include "sim/pressure_solver.h"
+#include "sim/solid_geometry.h"
+#include "sim/velocity_extrapolation.h"
+
+namespace fluidsound::sim {
+namespace {
+/// Layers of face velocity extrapolated beyond the liquid: a particle moves at most `cfl` cells
+/// per substep and reads velocities one cell around it.
+constexpr int kExtraLayers = 2;
+/// Substeps are cut so that none is shorter than this fraction of the previous: avoids a tiny last
+/// substep before a frame boundary (the remainder is split evenly over two substeps instead).
+constexpr double kMinimumSubstepFraction = 0.25;
+/// Faces wholly inside solids move with the solid (after extrapolation filled them with liquid
+/// velocities): no particle is carried into a wall (Batty's Fluid3D `constrain_velocity`, here
+/// for the whole velocity of closed faces).
+void constrainToSolids(MacVelocity& velocity, const std::array<Array3f, 3>& faceOpen,
+                       const std::array<Array3f, 3>& solidVelocity) {
+  for (int a = 0; a < 3; ++a) {
+    auto& u = velocity[a].values();
+    const auto& open = faceOpen[a].values();
+    const auto& solid = solidVelocity[a].values();
+    for (std::size_t f = 0; f < u.size(); ++f)
+      if (open[f] <= 0.0f) u[f] = solid[f];
+  }
+}
+
+/// The liquid distance the pressure solve sees: extended into cells whose centre is inside a solid
+/// (φ = −h/2 there, Batty's Fluid3D `compute_phi`), so no free surface forms against a wall and
+/// cut cells next to walls drain nothing.
+Array3f extendIntoSolids(const Array3f& liquidPhi, const Array3f& solidNodes, const GridGeometry& grid) {
+  Array3f phi = liquidPhi;
+  const float inside = static_cast<float>(-0.5 * grid.cellSize);
+  for (int k = 0; k < grid.cells[2]; ++k)
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i) {
+        float solid = 0.0f;
+        for (int c = 0; c < 8; ++c) solid += solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
+        if (solid < 0.0f) phi(i, j, k) = inside;
+      }
+  return phi;
+}
+
+}  // namespace
+
+struct FluidSolver::Workspace {
+  Array3f solidNodes;                   ///< solid signed distance at nodes [m]
+  std::array<Array3f, 3> faceOpen;      ///< fraction of each face open to liquid [-]
+  std::array<Array3f, 3> solidVelocity; ///< solid velocity at faces [m/s]
+  std::array<Array3f, 3> weight;        ///< particle weight per face (P2G)
+  MacVelocity oldVelocity;              ///< grid velocity before forces (FLIP)
+  PressureSolver pressure;
+  bool solidsMove = false;
+};
+
+FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
+    : scene_(scene), properties_(properties), grid_(scene.grid()), work_(std::make_unique<Workspace>()) {
+  if (!scene.emitters.empty()) throw std::invalid_argument("emitters are not supported yet");
+  for (const Solid& s : scene.solids) work_->solidsMove = work_->solidsMove || !s.path.empty();
+  work_->solidNodes = solidNodeDistance(grid_, scene.domain, scene.solids, 0.0);
+  work_->faceOpen = faceOpenFractions(work_->solidNodes, grid_);
+  work_->solidVelocity = solidFaceVelocity(grid_, scene.domain, scene.solids, 0.0);
+  const int perCell = scene.solver.particlesPerCell;
+  particles_ = seedLiquid(grid_, scene.liquid, work_->solidNodes, perCell, scene.seed);
+  // 0.8 × the mean particle spacing h/∛n: centres the Zhu–Bridson surface of a seeded layer on
+  // the layer's top (measured in tests/sim/particle_transfer_test.cpp).
+  constexpr double kRadiusOverSpacing = 0.8;
+  particleRadius_ = kRadiusOverSpacing * grid_.cellSize / std::cbrt(static_cast<double>(perCell));
+  velocity_ = MacVelocity(grid_);
+  const CellIndex index = sortParticlesByCell(particles_, grid_);
+  particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight);
+  liquidPhi_ = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
+}
+
+FluidSolver::~FluidSolver() = default;
+
+double FluidSolver::stableTimeStep() const {
+  // Bridson (2015) §3.3: u_max = max|u_p| + √(5 h |g|) bounds the speed reached in one step.
+  const double speed2 = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, particles_.size()), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double m) {
+        for (std::size_t p = r.begin(); p < r.end(); ++p) {
+          const Vec3f& v = particles_.velocity[p];
+          m = std::max(m, static_cast<double>(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+        }
+        return m;
+      },
+      [](double a, double b) { return std::max(a, b); });  // max is exact: order does not matter
+  const Vec3& g = scene_.gravity;
+  const double gravity = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  const double speed = std::sqrt(speed2) + std::sqrt(5.0 * grid_.cellSize * gravity);
+  return speed > 0.0 ? scene_.time.cfl * grid_.cellSize / speed : 1e300;
+}
+
+FrameStats FluidSolver::advanceTo(double until) {
+  FrameStats stats;
+  while (time_ < until) {
+    double dt = std::min(stableTimeStep(), until - time_);
+    if (until - time_ - dt < kMinimumSubstepFraction * dt && until - time_ > dt) dt = 0.5 * (until - time_);
+    substep(dt, stats);
+    time_ = (until - time_ - dt <= 0.0) ? until : time_ + dt;
+    ++stats.substeps;
+  }
+  stats.particles = particles_.size();
+  stats.liquidVolume = liquidVolume(liquidPhi_, grid_);
+  double speed2 = 0.0;
+  for (const Vec3f& v : particles_.velocity)
+    speed2 = std::max(speed2, static_cast<double>(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+  stats.maxSpeed = std::sqrt(speed2);
+  return stats;
+}
+
+double FluidSolver::substep(double dt, FrameStats& stats) {
+  Workspace& w = *work_;
+  if (w.solidsMove) {
+    w.solidNodes = solidNodeDistance(grid_, scene_.domain, scene_.solids, time_ + dt);
+    w.faceOpen = faceOpenFractions(w.solidNodes, grid_);
+    w.solidVelocity = solidFaceVelocity(grid_, scene_.domain, scene_.solids, time_ + dt);
+  }
+  // 1. Particles → grid.
+  const CellIndex index = sortParticlesByCell(particles_, grid_);
+  particlesToGrid(particles_, grid_, scene_.solver.transfer, velocity_, w.weight);
+  FaceMask reached;
+  for (int a = 0; a < 3; ++a) {
+    reached[a] = Array3<std::uint8_t>(w.weight[a].size(), 0);
+    for (std::size_t f = 0; f < w.weight[a].elementCount(); ++f) reached[a].values()[f] = w.weight[a].values()[f] > 0.0f;
+  }
+  extrapolateVelocity(velocity_, reached, kExtraLayers);
+  w.oldVelocity = velocity_;
+  // 2. Body forces.
+  for (int a = 0; a < 3; ++a) {
+    const float dv = static_cast<float>(scene_.gravity[a] * dt);
+    for (float& u : velocity_[a].values()) u += dv;
+  }
+  // 3. Free surface and pressure projection.
+  liquidPhi_ = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
+  PressureSettings settings;
+  settings.tolerance = scene_.solver.pressureTolerance;
+  settings.maxIterations = scene_.solver.maxPressureIterations;
+  const Array3f pressurePhi = extendIntoSolids(liquidPhi_, w.solidNodes, grid_);
+  const PressureReport report = w.pressure.project(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
+                                                   properties_.density, dt, settings);
+  stats.pressureIterations += report.iterations;
+  stats.pressureResidual = std::max(stats.pressureResidual, report.relativeResidual);
+  stats.pressureConverged = stats.pressureConverged && report.converged;
+  stats.maxDivergence = std::max(
+      stats.maxDivergence, maxRelativeDivergence(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_));
+  // 4. Velocity beyond the liquid, grid → particles, advection.
+  extrapolateVelocity(velocity_, w.pressure.validFaces(), static_cast<int>(std::ceil(scene_.time.cfl)) + kExtraLayers);
+  constrainToSolids(velocity_, w.faceOpen, w.solidVelocity);
+  gridToParticles(particles_, velocity_, w.oldVelocity, grid_, scene_.solver);
+  stats.particlesDeleted += advectParticles(particles_, velocity_, grid_, w.solidNodes, scene_.domain, dt);
+  return dt;
+}
+
+}  // namespace fluidsound::sim

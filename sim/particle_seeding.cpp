@@ -1,0 +1,115 @@
+// sim/particle_seeding.cpp — see particle_seeding.h.
+#include "sim/particle_seeding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include <tbb/parallel_for.h>
+
+namespace fluidsound::sim {
+
+namespace {
+
+double boxDistance(const Box& b, const Vec3& p) {
+  // Exact signed distance to an axis-aligned box (negative inside).
+  double outside = 0.0, inside = -1e300;
+  for (int a = 0; a < 3; ++a) {
+    const double d = std::max(b.min[a] - p[a], p[a] - b.max[a]);
+    outside += d > 0 ? d * d : 0.0;
+    inside = std::max(inside, d);
+  }
+  return outside > 0 ? std::sqrt(outside) : inside;
+}
+
+/// A 64-bit mix of the seed and a cell index (SplitMix64 finaliser, Steele et al. 2014), so each
+/// cell has its own random stream whatever the thread that seeds it.
+std::uint64_t cellStream(std::uint64_t seed, std::uint64_t cell) {
+  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + cell + 0x632BE59BD9B4E019ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+double regionDistance(const LiquidRegion& region, const Vec3& p) {
+  if (const auto* b = std::get_if<Box>(&region.shape)) return boxDistance(*b, p);
+  if (const auto* s = std::get_if<Sphere>(&region.shape)) {
+    const double dx = p[0] - s->center[0], dy = p[1] - s->center[1], dz = p[2] - s->center[2];
+    return std::sqrt(dx * dx + dy * dy + dz * dz) - s->radius;
+  }
+  throw std::invalid_argument("liquid mesh regions are not supported yet");
+}
+
+float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec3& p) {
+  const Vec3 g = grid.gridFromWorld(p);
+  int i[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double c = std::clamp(g[a], 0.0, static_cast<double>(nodes.size()[a] - 1));
+    i[a] = std::min(static_cast<int>(c), nodes.size()[a] - 2);
+    f[a] = c - i[a];
+  }
+  double v = 0.0;
+  for (int dk = 0; dk < 2; ++dk)
+    for (int dj = 0; dj < 2; ++dj)
+      for (int di = 0; di < 2; ++di)
+        v += (di ? f[0] : 1 - f[0]) * (dj ? f[1] : 1 - f[1]) * (dk ? f[2] : 1 - f[2]) *
+             nodes(i[0] + di, i[1] + dj, i[2] + dk);
+  return static_cast<float>(v);
+}
+
+Particles seedLiquid(const GridGeometry& grid, std::span<const LiquidRegion> regions,
+                     const Array3f& solidNodeDistance, int perCell, std::uint64_t seed) {
+  for (const LiquidRegion& r : regions)
+    if (std::holds_alternative<MeshFile>(r.shape))
+      throw std::invalid_argument("liquid mesh regions are not supported yet");
+  const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
+  const int strata = static_cast<int>(std::lround(std::cbrt(perCell)));
+  // Each cell seeds into its own slot; slots are concatenated in cell order (deterministic).
+  std::vector<Particles> perSlab(static_cast<std::size_t>(nk));
+  tbb::parallel_for(0, nk, [&](int k) {
+    Particles& out = perSlab[k];
+    for (int j = 0; j < nj; ++j)
+      for (int i = 0; i < ni; ++i) {
+        const std::uint64_t cell = (static_cast<std::uint64_t>(k) * nj + j) * ni + i;
+        std::mt19937_64 random(cellStream(seed, cell));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (int s = 0; s < perCell; ++s) {
+          // Stratified when perCell is a cube (8 = 2³: one particle per sub-cell, jittered inside
+          // it), so the initial distribution has no clumps or holes; otherwise uniform.
+          Vec3 local{unit(random), unit(random), unit(random)};
+          if (strata * strata * strata == perCell) {
+            const int sub[3] = {s % strata, (s / strata) % strata, s / (strata * strata)};
+            for (int a = 0; a < 3; ++a) local[a] = (sub[a] + local[a]) / strata;
+          }
+          const Vec3 p = grid.worldFromGrid({i + local[0], j + local[1], k + local[2]});
+          if (interpolateNodes(solidNodeDistance, grid, p) <= 0.0f) continue;
+          for (const LiquidRegion& r : regions) {
+            if (regionDistance(r, p) < 0.0) {
+              out.push({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])},
+                       {static_cast<float>(r.velocity[0]), static_cast<float>(r.velocity[1]),
+                        static_cast<float>(r.velocity[2])});
+              break;
+            }
+          }
+        }
+      }
+  });
+  Particles all;
+  std::size_t total = 0;
+  for (const Particles& p : perSlab) total += p.size();
+  all.position.reserve(total);
+  all.velocity.reserve(total);
+  all.affine.reserve(total);
+  for (const Particles& p : perSlab) {
+    all.position.insert(all.position.end(), p.position.begin(), p.position.end());
+    all.velocity.insert(all.velocity.end(), p.velocity.begin(), p.velocity.end());
+    all.affine.insert(all.affine.end(), p.affine.begin(), p.affine.end());
+  }
+  return all;
+}
+
+}  // namespace fluidsound::sim

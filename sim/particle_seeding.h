@@ -1,0 +1,29 @@
+// sim/particle_seeding.h — filling the scene's initial liquid regions with jittered particles.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "sim/array3.h"
+#include "sim/grid.h"
+#include "sim/particles.h"
+#include "sim/scene.h"
+
+namespace fluidsound::sim {
+
+/// @brief Seeds `perCell` particles (per axis ∛perCell when a cube, else stratified-random) in
+///        every cell, at jittered positions, keeping those inside a liquid region and outside
+///        solids (solid distance interpolated from the nodes > 0). Velocity = the region's.
+///        The jitter comes from `seed` and the cell index, so the result does not depend on threads.
+/// @param solidNodeDistance  signed distance to solids at the grid nodes [m] (negative inside)
+/// @throws std::invalid_argument for mesh regions (meshes come with the obstacles issue)
+Particles seedLiquid(const GridGeometry& grid, std::span<const LiquidRegion> regions,
+                     const Array3f& solidNodeDistance, int perCell, std::uint64_t seed);
+
+/// @brief Signed distance to a liquid region's shape [m], negative inside.
+double regionDistance(const LiquidRegion& region, const Vec3& p);
+
+/// @brief Trilinear interpolation of a node-sampled field at world position p.
+float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec3& p);
+
+}  // namespace fluidsound::sim

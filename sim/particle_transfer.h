@@ -1,0 +1,42 @@
+// sim/particle_transfer.h — moving velocity between particles and the MAC grid: APIC (Jiang et
+// al. 2015) by default, FLIP/PIC blend (Zhu & Bridson 2005) selectable; trilinear weights.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "sim/array3.h"
+#include "sim/grid.h"
+#include "sim/mac_velocity.h"
+#include "sim/particles.h"
+#include "sim/scene.h"
+
+namespace fluidsound::sim {
+
+/// Where each cell's particles are after sortParticlesByCell: cell c (index (k·nj + j)·ni + i)
+/// holds particles [start[c], start[c+1]); start[cells] … size() are outside the grid.
+struct CellIndex {
+  std::vector<std::size_t> start;
+};
+
+/// @brief Sorts particles by cell (z, then y, then x; stable), so that transfers visit memory in
+///        order and parallel scatters can be split into slabs. Particles outside the grid go last.
+CellIndex sortParticlesByCell(Particles& particles, const GridGeometry& grid);
+
+/// @brief Particle → grid: face velocity = Σ w·(v_p + C_p·(x_face − x_p)) / Σ w (APIC; FLIP/PIC
+///        drops the affine term). Faces no particle reaches get velocity 0 and weight 0.
+///        Particles must be sorted by cell (sortParticlesByCell). Deterministic for any thread
+///        count: z-slabs of 4 cells are scattered in two passes (even, then odd slabs).
+/// @param weight  out: Σ w per face, the mass a face received (0 = no liquid nearby)
+void particlesToGrid(const Particles& particles, const GridGeometry& grid, TransferScheme scheme,
+                     MacVelocity& velocity, std::array<Array3f, 3>& weight);
+
+/// @brief Grid → particle. APIC: v_p = u(x_p), C_p,a = Σ u_a,i ∇w_i. FLIP: v_p ← r·(v_p +
+///        u(x_p) − u_old(x_p)) + (1 − r)·u(x_p), r = settings.flipRatio.
+void gridToParticles(Particles& particles, const MacVelocity& velocity, const MacVelocity& oldVelocity,
+                     const GridGeometry& grid, const SolverSettings& settings);
+
+/// @brief Trilinear interpolation of the MAC velocity at world position p [m/s].
+Vec3 interpolateVelocity(const MacVelocity& velocity, const GridGeometry& grid, const Vec3& p);
+
+}  // namespace fluidsound::sim

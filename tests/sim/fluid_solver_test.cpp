@@ -1,0 +1,93 @@
+// Tests of sim/fluid_solver.h: whole substeps of the liquid solver on coarse grids.
+#include "sim/fluid_solver.h"
+
+#include <gtest/gtest.h>
+#include <oneapi/tbb/task_arena.h>
+
+#include <cmath>
+
+namespace fluidsound::sim {
+namespace {
+
+/// A closed box tank, liquid to `level` [m]; 16 × 16 × 16 cells of 1 cm.
+Scene tank(double level) {
+  Scene s;
+  s.domain.max = {0.16, 0.16, 0.16};
+  s.domain.cell = 0.01;
+  s.time.duration = 1.0;
+  s.liquid.push_back({Box{{0, 0, 0}, {0.16, level, 0.16}}, {}});
+  return s;
+}
+
+/// A coarse dam break: a 0.1 × 0.2 m column at the −x wall of a 0.5 × 0.3 × 0.05 m box.
+Scene damBreak() {
+  Scene s;
+  s.domain.max = {0.5, 0.3, 0.05};
+  s.domain.cell = 0.01;
+  s.time.duration = 1.0;
+  s.liquid.push_back({Box{{0, 0, 0}, {0.1, 0.2, 0.05}}, {}});
+  return s;
+}
+
+// Projection leaves the velocity divergence-free to the solver tolerance: the issue asks for
+// max|∇·u|·Δx/|u|max < 1e-4 in liquid cells after each step; a 1e-6 relative residual gives
+// ~1e-6 (the residual is a divergence, scaled by the same Δx/|u|).
+TEST(FluidSolver, DamBreakStaysDivergenceFreeAndConverges) {
+  FluidSolver solver(damBreak());
+  const FrameStats stats = solver.advanceTo(0.2);
+  EXPECT_GT(stats.substeps, 1);
+  EXPECT_TRUE(stats.pressureConverged);
+  EXPECT_LT(stats.maxDivergence, 1e-4);
+  EXPECT_GT(stats.maxSpeed, 1.0) << "the column must be collapsing: ~√(2 g 0.2 m) ≈ 2 m/s";
+}
+
+// No particle is lost or created in a closed box, and the liquid keeps its cells: the count of
+// cells with φ < 0 stays within 5 % of the initial 1000 over 1 s (a level-set measure of volume;
+// the issue's 2 % over 3 s at production resolution is checked by the benchmark, not here).
+TEST(FluidSolver, DamBreakKeepsParticlesAndLiquidCells) {
+  FluidSolver solver(damBreak());
+  const std::size_t particles = solver.particles().size();
+  const auto liquidCells = [&] {
+    int n = 0;
+    for (float v : solver.liquidDistance().values()) n += v < 0.0f;
+    return n;
+  };
+  const int initial = liquidCells();
+  solver.advanceTo(1.0);
+  EXPECT_EQ(solver.particles().size(), particles);
+  EXPECT_NEAR(liquidCells(), initial, 0.05 * initial);
+  for (const Vec3f& x : solver.particles().position) {
+    ASSERT_GE(x[1], 0.0f);
+    ASSERT_LE(x[0], 0.5f);
+  }
+}
+
+// Determinism (brief): the same scene gives the same particles, bit for bit, on 1 and 2 threads.
+TEST(FluidSolver, IdenticalParticlesForAnyThreadCount) {
+  std::vector<Vec3f> one, two;
+  oneapi::tbb::task_arena(1).execute([&] {
+    FluidSolver s(damBreak());
+    s.advanceTo(0.1);
+    one = s.particles().position;
+  });
+  oneapi::tbb::task_arena(2).execute([&] {
+    FluidSolver s(damBreak());
+    s.advanceTo(0.1);
+    two = s.particles().position;
+  });
+  EXPECT_EQ(one, two);
+}
+
+// A tank at rest stays nearly at rest. The issue's goal is < 1 mm/s after 2 s; the current
+// particle surface (Zhu–Bridson, bumps of ~0.3 cell) drives currents: measured 2.4 cm/s at
+// 0.5 s, 0.9 cm/s at 2 s. This is a regression bound (3 cm/s at 0.5 s), not the goal — a known
+// gap, recorded in docs/solver.md.
+TEST(FluidSolver, RestingTankStaysNearlyAtRest) {
+  FluidSolver solver(tank(0.0735));
+  const FrameStats stats = solver.advanceTo(0.5);
+  EXPECT_LT(stats.maxSpeed, 0.03);
+  EXPECT_LT(stats.maxDivergence, 1e-4);
+}
+
+}  // namespace
+}  // namespace fluidsound::sim
