@@ -145,4 +145,44 @@ TEST_F(Cli, VersionNamesTheLibraries) {
     EXPECT_NE(text.str().find(name), std::string::npos) << name << " missing in: " << text.str();
 }
 
+
+const std::string kTinyScene = R"({"format": "fluidsound.scene/1",
+  "domain": {"min": [0, 0, 0], "max": [0.08, 0.08, 0.04], "cell": 0.01},
+  "time": {"duration": 0.1, "fps": 30},
+  "liquid": [{"box": {"min": [0, 0, 0], "max": [0.03, 0.06, 0.04]}}]})";
+
+// A scene simulates to frames/0000.vdb … and report.json (frame 0 is the initial state).
+TEST_F(Cli, SimulateWritesFramesAndReport) {
+  const fs::path scene = write("tiny.json", kTinyScene);
+  const fs::path out = folder_ / "out";
+  const Outcome r = run("simulate " + scene.string() + " -o " + out.string() + " --ply --quiet");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"0000.vdb", "0001.vdb", "0002.vdb", "0003.vdb", "0000.ply", "0003.ply"})
+    EXPECT_TRUE(fs::exists(out / "frames" / name)) << name;
+  EXPECT_FALSE(fs::exists(out / "frames" / "0004.vdb"));
+  EXPECT_TRUE(fs::exists(out / "report.json"));
+}
+
+// A bad scene: one line naming the file and the JSON path, exit 3, and no output folder at all.
+TEST_F(Cli, SimulateRejectsBadSceneBeforeWritingAnything) {
+  std::string text = kTinyScene;
+  text.replace(text.find("\"cell\""), 6, "\"cel\"");
+  const fs::path scene = write("typo.json", text);
+  const Outcome r = run("simulate " + scene.string() + " -o " + (folder_ / "out").string());
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("typo.json: domain.cel"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  expectNoOutput({"typo.json"});
+}
+
+// An output folder that cannot be made (a file stands in its way): exit 4, no frame written.
+TEST_F(Cli, SimulateRejectsUnwritableOutput) {
+  const fs::path scene = write("tiny.json", kTinyScene);
+  write("blocked", "a file, not a folder");
+  const Outcome r = run("simulate " + scene.string() + " -o " + (folder_ / "blocked").string());
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  EXPECT_NE(r.err.find("blocked"), std::string::npos) << r.err;
+  expectNoOutput({"tiny.json", "blocked"});
+}
+
 }  // namespace
