@@ -2,6 +2,7 @@
 #include "sim/fluid_solver.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -130,6 +131,14 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
     w.faceOpen = faceOpenFractions(w.solidNodes, grid_);
     w.solidVelocity = solidFaceVelocity(grid_, scene_.domain, scene_.solids, time_ + dt);
   }
+  using Clock = std::chrono::steady_clock;
+  auto mark = Clock::now();
+  const auto lap = [&mark](double& total) {
+    const auto now = Clock::now();
+    total += std::chrono::duration<double>(now - mark).count();
+    mark = now;
+  };
+  FrameStats::StageSeconds& seconds = stats.stageSeconds;
   // 1. Particles → grid.
   const CellIndex index = sortParticlesByCell(particles_, grid_);
   particlesToGrid(particles_, grid_, scene_.solver.transfer, velocity_, w.weight);
@@ -138,6 +147,7 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
     reached[a] = Array3<std::uint8_t>(w.weight[a].size(), 0);
     for (std::size_t f = 0; f < w.weight[a].elementCount(); ++f) reached[a].values()[f] = w.weight[a].values()[f] > 0.0f;
   }
+  lap(seconds.transfer);
   extrapolateVelocity(velocity_, reached, kExtraLayers);
   w.oldVelocity = velocity_;
   // 2. Body forces.
@@ -145,8 +155,10 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
     const float dv = static_cast<float>(scene_.gravity[a] * dt);
     for (float& u : velocity_[a].values()) u += dv;
   }
+  lap(seconds.forces);
   // 3. Free surface and pressure projection.
   liquidPhi_ = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
+  lap(seconds.surface);
   PressureSettings settings;
   settings.tolerance = scene_.solver.pressureTolerance;
   settings.maxIterations = scene_.solver.maxPressureIterations;
@@ -158,11 +170,14 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
   stats.pressureConverged = stats.pressureConverged && report.converged;
   stats.maxDivergence = std::max(
       stats.maxDivergence, maxRelativeDivergence(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_));
+  lap(seconds.pressure);
   // 4. Velocity beyond the liquid, grid → particles, advection.
   extrapolateVelocity(velocity_, w.pressure.validFaces(), static_cast<int>(std::ceil(scene_.time.cfl)) + kExtraLayers);
   constrainToSolids(velocity_, w.faceOpen, w.solidVelocity);
   gridToParticles(particles_, velocity_, w.oldVelocity, grid_, scene_.solver);
+  lap(seconds.gridToParticles);
   stats.particlesDeleted += advectParticles(particles_, velocity_, grid_, w.solidNodes, scene_.domain, dt);
+  lap(seconds.advection);
   return dt;
 }
 

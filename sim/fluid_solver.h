@@ -27,6 +27,11 @@ struct FrameStats {
   double liquidVolume = 0.0;        ///< [m³], from the level set at the frame's end
   double maxDivergence = 0.0;       ///< worst max|∇·u|·h/|u|max after a projection
   double maxSpeed = 0.0;            ///< fastest particle at the frame's end [m/s]
+  /// Wall time per stage [s], summed over the frame's substeps: sort + particle→grid, forces and
+  /// extrapolation, liquid surface, pressure, grid→particle, advection.
+  struct StageSeconds {
+    double transfer = 0.0, forces = 0.0, surface = 0.0, pressure = 0.0, gridToParticles = 0.0, advection = 0.0;
+  } stageSeconds;
 };
 
 /// Liquid properties the solver needs.
