@@ -2,6 +2,8 @@
 // MIC(0) factor with tuning and safety constants, then PCG with a max-norm stopping test.
 #include "sim/pcg_solver.h"
 
+#include "sim/multigrid_preconditioner.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -112,8 +114,10 @@ void PcgSolver::applyPreconditioner(const SevenPointMatrix& A, std::span<const d
   }
 }
 
-PcgResult PcgSolver::solve(const SevenPointMatrix& A, std::span<const double> rhs,
-                           std::vector<double>& solution, double tolerance, int maxIterations) {
+template <typename Apply>
+PcgResult PcgSolver::iterate(const SevenPointMatrix& A, std::span<const double> rhs,
+                             std::vector<double>& solution, double tolerance, int maxIterations,
+                             const Apply& applyPreconditioner, double workPerApply) {
   const std::size_t n = A.size();
   PcgResult result;
   solution.assign(n, 0.0);
@@ -126,13 +130,14 @@ PcgResult PcgSolver::solve(const SevenPointMatrix& A, std::span<const double> rh
   result.relativeResidual = 1.0;
   aux_.resize(n);
   search_.resize(n);
-  buildPreconditioner(A);
-  applyPreconditioner(A, residual_, aux_);
+  applyPreconditioner(residual_, aux_);
+  result.matvecEquivalents += workPerApply;
   search_ = aux_;
   double sigma = dot(aux_, residual_);
   for (int iteration = 1; iteration <= maxIterations; ++iteration) {
     A.multiply(search_, aux_);
     ++result.matrixVectorProducts;
+    ++result.matvecEquivalents;
     const double curvature = dot(search_, aux_);
     if (!(curvature > 0.0)) break;  // A not positive definite along s: report, do not divide
     const double alpha = sigma / curvature;
@@ -148,7 +153,8 @@ PcgResult PcgSolver::solve(const SevenPointMatrix& A, std::span<const double> rh
       result.converged = true;
       break;
     }
-    applyPreconditioner(A, residual_, aux_);
+    applyPreconditioner(residual_, aux_);
+    result.matvecEquivalents += workPerApply;
     const double sigmaNew = dot(aux_, residual_);
     const double beta = sigmaNew / sigma;
     forEachBlock(n, [&](std::size_t, std::size_t begin, std::size_t end) {
@@ -157,6 +163,24 @@ PcgResult PcgSolver::solve(const SevenPointMatrix& A, std::span<const double> rh
     sigma = sigmaNew;
   }
   return result;
+}
+
+PcgResult PcgSolver::solve(const SevenPointMatrix& A, std::span<const double> rhs,
+                           std::vector<double>& solution, double tolerance, int maxIterations) {
+  buildPreconditioner(A);
+  return iterate(
+      A, rhs, solution, tolerance, maxIterations,
+      [&](std::span<const double> r, std::span<double> z) { applyPreconditioner(A, r, z); },
+      /*workPerApply=*/1.0);
+}
+
+PcgResult PcgSolver::solve(const SevenPointMatrix& A, std::span<const double> rhs,
+                           std::vector<double>& solution, double tolerance, int maxIterations,
+                           MultigridPreconditioner& multigrid) {
+  return iterate(
+      A, rhs, solution, tolerance, maxIterations,
+      [&](std::span<const double> r, std::span<double> z) { multigrid.apply(A, r, z); },
+      multigrid.fineSweepsPerApply());
 }
 
 }  // namespace fluidsound::sim

@@ -20,6 +20,14 @@ inline constexpr double kMicTuning = 0.97;
 /// nearly cut off by solids, the near-singular pure-Neumann case).
 inline constexpr double kMicSafety = 0.25;
 
+/// Preconditioner of the conjugate gradients.
+enum class Preconditioner {
+  Mic0,       ///< modified incomplete Cholesky (Bridson 2015, ch. 5); serial triangular solves
+  Multigrid,  ///< one geometric multigrid V-cycle (McAdams, Sifakis & Teran 2010); needs the grid
+};
+
+class MultigridPreconditioner;
+
 /// A symmetric 7-point matrix on unknowns numbered in grid order (x fastest, then y, then z), so
 /// that every −x/−y/−z neighbour has a smaller number than the unknown itself (required by the
 /// MIC(0) sweep order). Off-diagonals are stored once, on the lower-numbered unknown.
@@ -42,6 +50,11 @@ struct PcgResult {
   double relativeResidual = 0;   ///< max|r| / max|b| at exit (0 when b = 0)
   bool converged = false;        ///< relativeResidual ≤ tolerance
   int matrixVectorProducts = 0;  ///< products A·x evaluated
+  /// matrixVectorProducts plus the preconditioner's work on all unknowns in units of one product:
+  /// 1 per MIC(0) application (two triangular solves, each half of the 7-point stencil), and per
+  /// V-cycle its level-0 smoothing sweeps and residual (MultigridPreconditioner::fineSweepsPerApply;
+  /// the coarse levels, ≤ 1/7 more, are not counted).
+  double matvecEquivalents = 0;
   bool operator==(const PcgResult&) const = default;
 };
 
@@ -58,11 +71,23 @@ class PcgSolver {
   PcgResult solve(const SevenPointMatrix& A, std::span<const double> rhs,
                   std::vector<double>& solution, double tolerance, int maxIterations);
 
+  /// @brief As solve above, preconditioned by one V-cycle of `multigrid`, which must have been
+  ///        built for the unknowns of A (MultigridPreconditioner::build).
+  PcgResult solve(const SevenPointMatrix& A, std::span<const double> rhs,
+                  std::vector<double>& solution, double tolerance, int maxIterations,
+                  MultigridPreconditioner& multigrid);
+
   /// Entries per block of a dot product (32 KiB of doubles): large enough to amortise the task
   /// overhead, small enough that a 32³ grid still spreads over a few threads.
   static constexpr std::size_t kReductionBlock = 4096;
 
  private:
+  /// The CG iteration; applyPreconditioner(r, z) computes z = M⁻¹·r and `workPerApply` is its
+  /// cost in matrix-vector products (PcgResult::matvecEquivalents).
+  template <typename Apply>
+  PcgResult iterate(const SevenPointMatrix& A, std::span<const double> rhs,
+                    std::vector<double>& solution, double tolerance, int maxIterations,
+                    const Apply& applyPreconditioner, double workPerApply);
   void buildPreconditioner(const SevenPointMatrix& A);
   void applyPreconditioner(const SevenPointMatrix& A, std::span<const double> r,
                            std::span<double> z);

@@ -69,7 +69,8 @@ double weightedNetOutflow(const MacVelocity& velocity, const std::array<Array3f,
 std::ostream& operator<<(std::ostream& out, const PressureReport& r) {
   return out << "{iterations " << r.iterations << ", relativeResidual " << r.relativeResidual
              << ", converged " << (r.converged ? "yes" : "no") << ", unknowns " << r.unknowns
-             << ", matrixVectorProducts " << r.matrixVectorProducts << "}";
+             << ", matrixVectorProducts " << r.matrixVectorProducts << ", matvecEquivalents "
+             << r.matvecEquivalents << "}";
 }
 
 void PressureSolver::assemble(const MacVelocity& velocity, const Array3f& liquidPhi,
@@ -180,8 +181,14 @@ PressureReport PressureSolver::project(MacVelocity& velocity, const Array3f& liq
                                 std::to_string(grid.cellSize) + " m must all be > 0");
 
   assemble(velocity, liquidPhi, faceOpen, solidVelocity, grid, density, dt);
-  const PcgResult solve =
-      pcg_.solve(matrix_, rhs_, solution_, settings.tolerance, settings.maxIterations);
+  PcgResult solve;
+  if (settings.preconditioner == Preconditioner::Multigrid) {
+    multigrid_.build(unknownOfCell_, faceOpen, dt / (density * grid.cellSize * grid.cellSize));
+    solve = pcg_.solve(matrix_, rhs_, solution_, settings.tolerance, settings.maxIterations,
+                       multigrid_);
+  } else {
+    solve = pcg_.solve(matrix_, rhs_, solution_, settings.tolerance, settings.maxIterations);
+  }
 
   pressure_ = Array3d(grid.cells, 0.0);
   for (int k = 0; k < grid.cells[2]; ++k)
@@ -197,6 +204,7 @@ PressureReport PressureSolver::project(MacVelocity& velocity, const Array3f& liq
   report.converged = solve.converged;
   report.unknowns = static_cast<std::int64_t>(matrix_.size());
   report.matrixVectorProducts = solve.matrixVectorProducts;
+  report.matvecEquivalents = solve.matvecEquivalents;
   return report;
 }
 

@@ -11,6 +11,7 @@
 #include "sim/array3.h"
 #include "sim/grid.h"
 #include "sim/mac_velocity.h"
+#include "sim/multigrid_preconditioner.h"
 #include "sim/pcg_solver.h"
 
 namespace fluidsound::sim {
@@ -31,6 +32,9 @@ inline constexpr double kOpenBoundarySurfaceFraction = 0.5;
 struct PressureSettings {
   double tolerance = 1e-6;   ///< stop when max|r| ≤ tolerance·max|b| (relative, max-norm)
   int maxIterations = 1000;  ///< PCG iteration limit
+  /// Multigrid by default (McAdams et al. 2010: 11–23 CG iterations from 32³ to 128³ where MIC(0)
+  /// needs 34–122; 1.2–1.8× faster per projection from 64³ up); MIC(0) selectable.
+  Preconditioner preconditioner = Preconditioner::Multigrid;
   bool operator==(const PressureSettings&) const = default;
 };
 
@@ -41,6 +45,7 @@ struct PressureReport {
   bool converged = false;        ///< relativeResidual ≤ settings.tolerance
   std::int64_t unknowns = 0;     ///< liquid cells with at least one open face
   int matrixVectorProducts = 0;  ///< 7-point products evaluated
+  double matvecEquivalents = 0;  ///< products plus preconditioner work (PcgResult)
   bool operator==(const PressureReport&) const = default;
 };
 
@@ -107,6 +112,7 @@ class PressureSolver {
   std::vector<double> rhs_;
   std::vector<double> solution_;
   PcgSolver pcg_;
+  MultigridPreconditioner multigrid_;  ///< rebuilt by every solve that uses it
   Array3d pressure_;
   std::array<Array3<std::uint8_t>, 3> valid_;
 };
