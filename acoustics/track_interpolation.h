@@ -39,7 +39,7 @@ class TrackInterpolator {
   /// Doubles of storage the tables of `bubble` need.
   static std::size_t storageSize(const BubbleTrack& bubble, std::size_t channels);
 
-  /// An empty track on no channel (a placeholder to assign to).
+  /// An empty track on no channel, to be assigned a real one later.
   TrackInterpolator() = default;
   TrackInterpolator(TrackInterpolator&&) noexcept = default;
   TrackInterpolator& operator=(TrackInterpolator&&) noexcept = default;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 #include "sim/liquid_surface.h"
@@ -63,6 +64,8 @@ struct FluidSolver::Workspace {
   std::array<Array3f, 3> solidVelocity; ///< solid velocity at faces [m/s]
   std::array<Array3f, 3> weight;        ///< particle weight per face (P2G)
   MacVelocity oldVelocity;              ///< grid velocity before forces (FLIP)
+  TransferWorkspace transfer;           ///< sort and particle → grid buffers, reused every substep
+  FaceMask reached;                     ///< faces particles reached (P2G weight > 0)
   PressureSolver pressure;
   bool solidsMove = false;
 };
@@ -81,8 +84,8 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
   constexpr double kRadiusOverSpacing = 0.8;
   particleRadius_ = kRadiusOverSpacing * grid_.cellSize / std::cbrt(static_cast<double>(perCell));
   velocity_ = MacVelocity(grid_);
-  const CellIndex index = sortParticlesByCell(particles_, grid_);
-  particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight);
+  const CellIndex& index = sortParticlesByCell(particles_, grid_, work_->transfer);
+  particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight, work_->transfer);
   liquidPhi_ = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
 }
 
@@ -140,16 +143,21 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
   };
   FrameStats::StageSeconds& seconds = stats.stageSeconds;
   // 1. Particles → grid.
-  const CellIndex index = sortParticlesByCell(particles_, grid_);
-  particlesToGrid(particles_, grid_, scene_.solver.transfer, velocity_, w.weight);
-  FaceMask reached;
+  const CellIndex& index = sortParticlesByCell(particles_, grid_, w.transfer);
+  particlesToGrid(particles_, grid_, scene_.solver.transfer, velocity_, w.weight, w.transfer);
   for (int a = 0; a < 3; ++a) {
-    reached[a] = Array3<std::uint8_t>(w.weight[a].size(), 0);
-    for (std::size_t f = 0; f < w.weight[a].elementCount(); ++f) reached[a].values()[f] = w.weight[a].values()[f] > 0.0f;
+    if (w.reached[a].size() != w.weight[a].size()) w.reached[a] = Array3<std::uint8_t>(w.weight[a].size(), 0);
+    std::uint8_t* const reached = w.reached[a].data();
+    const float* const weight = w.weight[a].data();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, w.weight[a].elementCount()),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t f = r.begin(); f < r.end(); ++f) reached[f] = weight[f] > 0.0f;
+                      });
   }
   lap(seconds.transfer);
-  extrapolateVelocity(velocity_, reached, kExtraLayers);
-  w.oldVelocity = velocity_;
+  extrapolateVelocity(velocity_, w.reached, kExtraLayers);
+  const bool flip = scene_.solver.transfer == TransferScheme::Flip;
+  if (flip) w.oldVelocity = velocity_;  // APIC does not read it
   // 2. Body forces.
   for (int a = 0; a < 3; ++a) {
     const float dv = static_cast<float>(scene_.gravity[a] * dt);
@@ -174,7 +182,7 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
   // 4. Velocity beyond the liquid, grid → particles, advection.
   extrapolateVelocity(velocity_, w.pressure.validFaces(), static_cast<int>(std::ceil(scene_.time.cfl)) + kExtraLayers);
   constrainToSolids(velocity_, w.faceOpen, w.solidVelocity);
-  gridToParticles(particles_, velocity_, w.oldVelocity, grid_, scene_.solver);
+  gridToParticles(particles_, velocity_, flip ? w.oldVelocity : velocity_, grid_, scene_.solver);
   lap(seconds.gridToParticles);
   stats.particlesDeleted += advectParticles(particles_, velocity_, grid_, w.solidNodes, scene_.domain, dt);
   lap(seconds.advection);

@@ -3,6 +3,8 @@
 // compact unknown numbering of SevenPointMatrix so that level 0 runs on the assembled matrix.
 #include "sim/multigrid_preconditioner.h"
 
+#include "sim/block_parallel.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -19,19 +21,6 @@ constexpr double kDomainFaceFraction = 0.5;
 /// the fine centre is ¼ coarse cell from its own parent's centre, ¾ from the other's.
 constexpr double kNearParentWeight = 0.75;
 constexpr double kFarParentWeight = 0.25;
-
-/// Runs body(begin, end) over [0, n) in fixed blocks of PcgSolver::kReductionBlock entries;
-/// callers write only entries of their own block, so results do not depend on the thread count.
-template <typename Body>
-void forEachBlock(std::size_t n, const Body& body) {
-  const std::size_t block = PcgSolver::kReductionBlock;
-  const std::size_t blocks = (n + block - 1) / block;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t b = r.begin(); b < r.end(); ++b)
-                        body(b * block, std::min(n, (b + 1) * block));
-                    });
-}
 
 /// Coarse parents of fine index i along one axis: {own parent, other parent}.
 std::array<int, 2> parents(int i) {
@@ -57,7 +46,7 @@ double offDiagonalProduct(const SevenPointMatrix& M, std::size_t n, std::span<co
 /// 7-point neighbours of a colour all have the other colour, so the updates are independent.
 void relaxColour(const SevenPointMatrix& M, std::span<const std::int32_t> colour,
                  std::span<const double> b, std::span<double> x) {
-  forEachBlock(colour.size(), [&](std::size_t begin, std::size_t end) {
+  forEachBlock(colour.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c) {
       const std::size_t n = static_cast<std::size_t>(colour[c]);
       x[n] = (b[n] - offDiagonalProduct(M, n, x)) / M.diagonal[n];
@@ -292,7 +281,7 @@ void MultigridPreconditioner::vCycle(std::size_t l, const SevenPointMatrix& A,
     relaxColour(M, level.boundaryColour[1], b, x);
   }
   std::vector<double>& residual = level.residual;
-  forEachBlock(M.size(), [&](std::size_t begin, std::size_t end) {
+  forEachBlock(M.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n)
       residual[n] = b[n] - M.diagonal[n] * x[n] - offDiagonalProduct(M, n, x);
   });
@@ -302,7 +291,7 @@ void MultigridPreconditioner::vCycle(std::size_t l, const SevenPointMatrix& A,
   constexpr double kRestrictionScale = 1.0 / 8.0;
   constexpr std::array<double, 4> kGatherWeights{kFarParentWeight, kNearParentWeight,
                                                  kNearParentWeight, kFarParentWeight};
-  forEachBlock(coarse.cellOfUnknown.size(), [&](std::size_t begin, std::size_t end) {
+  forEachBlock(coarse.cellOfUnknown.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t u = begin; u < end; ++u) {
       const Index3 c = coarse.cellOfUnknown[u];
       double sum = 0.0;
@@ -324,7 +313,7 @@ void MultigridPreconditioner::vCycle(std::size_t l, const SevenPointMatrix& A,
 
   // Prolongation P: trilinear from the 8 nearest coarse cells (0 in air and solid cells),
   // renormalised over the non-solid ones.
-  forEachBlock(M.size(), [&](std::size_t begin, std::size_t end) {
+  forEachBlock(M.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t u = begin; u < end; ++u) {
       const Index3 c = level.cellOfUnknown[u];
       const std::array<std::array<int, 2>, 3> p{parents(c[0]), parents(c[1]), parents(c[2])};

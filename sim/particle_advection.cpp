@@ -51,7 +51,8 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
     }
     particles.position[p] = {static_cast<float>(y[0]), static_cast<float>(y[1]), static_cast<float>(y[2])};
   });
-  // Remove the deleted, keeping the order.
+  // Remove the deleted, keeping the order (nothing to move when no domain face is open).
+  if (std::find(keep.begin(), keep.end(), std::uint8_t{0}) == keep.end()) return 0;
   std::size_t kept = 0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     if (!keep[p]) continue;

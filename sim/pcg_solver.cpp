@@ -2,31 +2,13 @@
 // MIC(0) factor with tuning and safety constants, then PCG with a max-norm stopping test.
 #include "sim/pcg_solver.h"
 
-#include "sim/multigrid_preconditioner.h"
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
+#include "sim/block_parallel.h"
+#include "sim/multigrid_preconditioner.h"
+
 namespace fluidsound::sim {
-namespace {
-
-/// Runs body(begin, end) over [0, n) in blocks of PcgSolver::kReductionBlock entries. Callers
-/// only write entries of their own block, so the result does not depend on the thread count.
-template <typename Body>
-void forEachBlock(std::size_t n, const Body& body) {
-  const std::size_t block = PcgSolver::kReductionBlock;
-  const std::size_t blocks = (n + block - 1) / block;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t b = r.begin(); b < r.end(); ++b)
-                        body(b, b * block, std::min(n, (b + 1) * block));
-                    });
-}
-
-}  // namespace
 
 void SevenPointMatrix::reset(std::size_t n) {
   diagonal.assign(n, 0.0);
@@ -38,7 +20,7 @@ void SevenPointMatrix::reset(std::size_t n) {
 }
 
 void SevenPointMatrix::multiply(std::span<const double> x, std::span<double> y) const {
-  forEachBlock(size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+  forEachBlock(size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n) {
       double sum = diagonal[n] * x[n];
       for (int a = 0; a < 3; ++a) {
@@ -61,7 +43,7 @@ double maxAbs(std::span<const double> x) {
 double PcgSolver::dot(std::span<const double> a, std::span<const double> b) {
   const std::size_t blocks = (a.size() + kReductionBlock - 1) / kReductionBlock;
   partial_.assign(blocks, 0.0);
-  forEachBlock(a.size(), [&](std::size_t block, std::size_t begin, std::size_t end) {
+  forEachBlock(a.size(), PcgSolver::kReductionBlock, [&](std::size_t block, std::size_t begin, std::size_t end) {
     double sum = 0.0;
     for (std::size_t n = begin; n < end; ++n) sum += a[n] * b[n];
     partial_[block] = sum;
@@ -141,7 +123,7 @@ PcgResult PcgSolver::iterate(const SevenPointMatrix& A, std::span<const double> 
     const double curvature = dot(search_, aux_);
     if (!(curvature > 0.0)) break;  // A not positive definite along s: report, do not divide
     const double alpha = sigma / curvature;
-    forEachBlock(n, [&](std::size_t, std::size_t begin, std::size_t end) {
+    forEachBlock(n, PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         solution[i] += alpha * search_[i];
         residual_[i] -= alpha * aux_[i];
@@ -157,7 +139,7 @@ PcgResult PcgSolver::iterate(const SevenPointMatrix& A, std::span<const double> 
     result.matvecEquivalents += workPerApply;
     const double sigmaNew = dot(aux_, residual_);
     const double beta = sigmaNew / sigma;
-    forEachBlock(n, [&](std::size_t, std::size_t begin, std::size_t end) {
+    forEachBlock(n, PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) search_[i] = aux_[i] + beta * search_[i];
     });
     sigma = sigmaNew;
