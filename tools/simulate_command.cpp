@@ -15,6 +15,7 @@
 #include "io/scene_file.h"
 #include "io/text_file.h"
 #include "sim/fluid_solver.h"
+#include "sim/liquid_surface.h"
 #include "tools/progress_display.h"
 #include "tools/run_report.h"
 
@@ -76,7 +77,13 @@ int runSimulateCommand(const SimulateOptions& o) {
   ProgressDisplay progress("simulate", range.last + 1, "frames", o.common.quiet);
   for (int f = 0; f <= range.last; ++f) {
     const auto t0 = Clock::now();
-    const sim::FrameStats stats = f == 0 ? sim::FrameStats{} : solver.advanceTo(f / scene.time.fps);
+    sim::FrameStats stats;
+    if (f == 0) {  // the initial state: nothing simulated, but its volume is the reference
+      stats.particles = solver.particles().size();
+      stats.liquidVolume = sim::liquidVolume(solver.liquidDistance(), solver.grid());
+    } else {
+      stats = solver.advanceTo(f / scene.time.fps);
+    }
     const auto t1 = Clock::now();
     if (f >= range.first) {
       io::writeFrameVdb(frames / frameName(f, "vdb"), solver.grid(), solver.particles(), solver.velocity(),
