@@ -106,6 +106,26 @@ PressureReport project(PressureSolver& solver, MacVelocity& u, const Tank& tank,
                         kDt, settings);
 }
 
+/// One gravity step of a tank at rest, projected: the report, the largest speed on valid faces
+/// relative to gΔt, and the largest hydrostatic pressure error relative to ρgH (figures printed).
+struct RestingTankResult {
+  PressureReport report;
+  double relativeSpeed = 0.0;
+  double relativePressureError = 0.0;
+};
+
+RestingTankResult projectRestingTank(const Tank& tank, const char* name,
+                                     const PressureSettings& settings = {}) {
+  MacVelocity u = afterGravity(tank.grid);
+  PressureSolver solver;
+  RestingTankResult result;
+  result.report = project(solver, u, tank, settings);
+  result.relativeSpeed = maxValidSpeed(u, solver) / (kGravity * kDt);
+  result.relativePressureError = maxHydrostaticError(tank, solver);
+  printFigures(name, result.report, result.relativeSpeed, result.relativePressureError);
+  return result;
+}
+
 TEST(PressureSolver, HydrostaticTankStaysAtRest) {
   for (int n : {16, 32}) {
     SCOPED_TRACE(testing::Message() << n << "³ cells");
@@ -114,12 +134,7 @@ TEST(PressureSolver, HydrostaticTankStaysAtRest) {
     Tank tank(n, (n / 2 + 0.3) * kCell);
     const int layers = n / 2;  // m: liquid cells per column
     const PressureSettings settings{1e-8, 1000};
-    MacVelocity u = afterGravity(tank.grid);
-    PressureSolver solver;
-    const PressureReport r = project(solver, u, tank, settings);
-    const double speed = maxValidSpeed(u, solver) / (kGravity * kDt);
-    const double pressure = maxHydrostaticError(tank, solver);
-    printFigures("hydrostatic tank", r, speed, pressure);
+    const auto [r, speed, pressure] = projectRestingTank(tank, "hydrostatic tank", settings);
     // Claim: liquid at rest under gravity stays at rest, and p = ρ g d at depth d — exactly, for
     // a flat surface, in the discrete ghost-fluid system (v = 0 and p = ρ g d satisfy every face
     // and surface equation). Tolerance: the solve leaves a residual max|r| ≤ tol·max|b| with
@@ -143,12 +158,7 @@ TEST(PressureSolver, OpenTopIsAPressureReleaseSurface) {
   constexpr int kSide = 16;
   Tank tank(kSide, 2.0, {}, /*openTop=*/true);  // surface far above: every cell is liquid
   tank.surfaceHeight = kSide * kCell;           // where p = 0: the open face
-  MacVelocity u = afterGravity(tank.grid);
-  PressureSolver solver;
-  const PressureReport r = project(solver, u, tank, PressureSettings{1e-8, 1000});
-  const double speed = maxValidSpeed(u, solver) / (kGravity * kDt);
-  const double pressure = maxHydrostaticError(tank, solver);
-  printFigures("open-top tank", r, speed, pressure);
+  const auto [r, speed, pressure] = projectRestingTank(tank, "open-top tank", PressureSettings{1e-8, 1000});
   EXPECT_TRUE(r.converged);
   EXPECT_LT(speed, 1e-6);
   EXPECT_LT(pressure, 1e-6);
@@ -174,12 +184,7 @@ TEST(PressureSolver, LiquidOnASlopedFloorStaysAtRest) {
   slope.translate = {0.0, -0.25 * length, 0.0};  // top at y ≈ 0.07 L … 0.54 L across the tank
   // Surface at 11.3 h (≈ 0.7 L): θ = 0.8 at the surface, as in the flat tank.
   Tank tank(kSide, 11.3 * kCell, std::span(&slope, 1));
-  MacVelocity u = afterGravity(tank.grid);
-  PressureSolver solver;
-  const PressureReport r = project(solver, u, tank);
-  const double speed = maxValidSpeed(u, solver) / (kGravity * kDt);
-  const double pressure = maxHydrostaticError(tank, solver);
-  printFigures("sloped floor", r, speed, pressure);
+  const auto [r, speed, pressure] = projectRestingTank(tank, "sloped floor");
   EXPECT_TRUE(r.converged);
   EXPECT_LT(speed, 1e-4);
   EXPECT_LT(pressure, 1e-4);
@@ -203,12 +208,7 @@ TEST(PressureSolver, LiquidInASphericalBowlStaysAtRest) {
         tank.nodeDistance(i, j, k) = std::min(tank.nodeDistance(i, j, k), float(bowl));
       }
   tank.updateWeights();
-  MacVelocity u = afterGravity(tank.grid);
-  PressureSolver solver;
-  const PressureReport r = project(solver, u, tank);
-  const double speed = maxValidSpeed(u, solver) / (kGravity * kDt);
-  const double pressure = maxHydrostaticError(tank, solver);
-  printFigures("spherical bowl", r, speed, pressure);
+  const auto [r, speed, pressure] = projectRestingTank(tank, "spherical bowl");
   EXPECT_TRUE(r.converged);
   EXPECT_LT(speed, 1e-4);
   EXPECT_LT(pressure, 1e-4);
