@@ -12,6 +12,7 @@
 
 #include "sim/liquid_surface.h"
 #include "sim/particle_advection.h"
+#include "sim/particle_reseeding.h"
 #include "sim/particle_seeding.h"
 #include "sim/particle_transfer.h"
 #include "sim/pressure_solver.h"
@@ -117,6 +118,19 @@ FrameStats FluidSolver::advanceTo(double until) {
     substep(dt, stats);
     time_ = (until - time_ - dt <= 0.0) ? until : time_ + dt;
     ++stats.substeps;
+  }
+  if (stats.substeps > 0) {
+    // Once per frame: refill liquid cells that particles have left and thin clumps.
+    const CellIndex& index = sortParticlesByCell(particles_, grid_, work_->transfer);
+    liquidPhi_ = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
+    ReseedingLimits limits;
+    limits.target = scene_.solver.particlesPerCell;
+    limits.minimum = std::min(limits.minimum, limits.target);
+    limits.maximum = std::max(limits.maximum, 2 * limits.target);
+    const ReseedingCount count = reseedParticles(particles_, index, liquidPhi_, work_->solidNodes, velocity_, grid_,
+                                                 limits, scene_.seed, ++reseedPasses_);
+    stats.particlesReseeded += count.added;
+    stats.particlesThinned += count.removed;
   }
   stats.particles = particles_.size();
   stats.liquidVolume = liquidVolume(liquidPhi_, grid_);

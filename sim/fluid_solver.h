@@ -24,6 +24,8 @@ struct FrameStats {
   bool pressureConverged = true;
   std::size_t particles = 0;
   std::size_t particlesDeleted = 0; ///< left through open faces
+  std::size_t particlesReseeded = 0; ///< added to liquid cells holding fewer than 4 (once per frame)
+  std::size_t particlesThinned = 0;  ///< removed from cells holding more than 16
   double liquidVolume = 0.0;        ///< [m³], from the level set at the frame's end
   double maxDivergence = 0.0;       ///< worst max|∇·u|·h/|u|max after a projection
   double maxSpeed = 0.0;            ///< fastest particle at the frame's end [m/s]
@@ -71,6 +73,7 @@ class FluidSolver {
   GridGeometry grid_;
   double time_ = 0.0;
   double particleRadius_ = 0.0;
+  std::uint64_t reseedPasses_ = 0;
   Particles particles_;
   MacVelocity velocity_;
   Array3f liquidPhi_;

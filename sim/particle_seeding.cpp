@@ -8,6 +8,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "sim/random_stream.h"
+
 namespace fluidsound::sim {
 
 namespace {
@@ -21,15 +23,6 @@ double boxDistance(const Box& b, const Vec3& p) {
     inside = std::max(inside, d);
   }
   return outside > 0 ? std::sqrt(outside) : inside;
-}
-
-/// A 64-bit mix of the seed and a cell index (SplitMix64 finaliser, Steele et al. 2014), so each
-/// cell has its own random stream whatever the thread that seeds it.
-std::uint64_t cellStream(std::uint64_t seed, std::uint64_t cell) {
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + cell + 0x632BE59BD9B4E019ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
 }
 
 }  // namespace

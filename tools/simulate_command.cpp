@@ -97,7 +97,9 @@ int runSimulateCommand(const SimulateOptions& o) {
     perFrame.push_back({{"frame", f}, {"time", solver.time()}, {"substeps", stats.substeps},
                         {"cg_iterations", stats.pressureIterations}, {"cg_residual", stats.pressureResidual},
                         {"cg_converged", stats.pressureConverged}, {"particles", solver.particles().size()},
-                        {"particles_deleted", stats.particlesDeleted}, {"liquid_volume", stats.liquidVolume},
+                        {"particles_deleted", stats.particlesDeleted},
+                        {"particles_reseeded", stats.particlesReseeded}, {"particles_thinned", stats.particlesThinned},
+                        {"liquid_volume", stats.liquidVolume},
                         {"max_divergence", stats.maxDivergence}, {"max_speed", stats.maxSpeed},
                         {"bubbles_alive", 0}, {"seconds", seconds}});
     if (!o.common.quiet)

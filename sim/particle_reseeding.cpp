@@ -1,0 +1,74 @@
+// sim/particle_reseeding.cpp — see particle_reseeding.h.
+#include "sim/particle_reseeding.h"
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "sim/particle_seeding.h"
+#include "sim/random_stream.h"
+
+namespace fluidsound::sim {
+
+ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, const Array3f& liquidPhi,
+                               const Array3f& solidNodes, const MacVelocity& velocity, const GridGeometry& grid,
+                               const ReseedingLimits& limits, std::uint64_t seed, std::uint64_t pass) {
+  const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
+  const float inside = static_cast<float>(-0.5 * grid.cellSize);
+  // Each slab k builds its part of the new particle list in cell order; slabs are joined in order.
+  std::vector<Particles> perSlab(static_cast<std::size_t>(nk));
+  std::vector<ReseedingCount> countPerSlab(static_cast<std::size_t>(nk));
+  tbb::parallel_for(0, nk, [&](int k) {
+    Particles& out = perSlab[k];
+    ReseedingCount& count = countPerSlab[k];
+    for (int j = 0; j < nj; ++j)
+      for (int i = 0; i < ni; ++i) {
+        const std::size_t cell = (static_cast<std::size_t>(k) * nj + j) * ni + i;
+        const std::size_t first = index.start[cell], held = index.start[cell + 1] - first;
+        const std::size_t keep = std::min<std::size_t>(held, limits.maximum);
+        for (std::size_t p = first; p < first + keep; ++p) {
+          out.position.push_back(particles.position[p]);
+          out.velocity.push_back(particles.velocity[p]);
+          out.affine.push_back(particles.affine[p]);
+        }
+        count.removed += held - keep;
+        if (held >= static_cast<std::size_t>(limits.minimum) || liquidPhi(i, j, k) > inside) continue;
+        std::mt19937_64 random(cellStream(seed ^ (pass * 0xD1B54A32D192ED03ull), cell));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (std::size_t n = held; n < static_cast<std::size_t>(limits.target); ++n) {
+          const double u = unit(random), v = unit(random), w = unit(random);  // fixed draw order
+          const Vec3 x = grid.worldFromGrid({i + u, j + v, k + w});
+          if (interpolateNodes(solidNodes, grid, x) <= 0.0f) continue;
+          const Vec3 vel = interpolateVelocity(velocity, grid, x);
+          out.push({static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2])},
+                   {static_cast<float>(vel[0]), static_cast<float>(vel[1]), static_cast<float>(vel[2])});
+          ++count.added;
+        }
+      }
+  });
+  Particles all;
+  ReseedingCount total;
+  std::size_t size = 0;
+  for (const Particles& p : perSlab) size += p.size();
+  all.position.reserve(size);
+  all.velocity.reserve(size);
+  all.affine.reserve(size);
+  for (int k = 0; k < nk; ++k) {
+    const Particles& p = perSlab[k];
+    all.position.insert(all.position.end(), p.position.begin(), p.position.end());
+    all.velocity.insert(all.velocity.end(), p.velocity.begin(), p.velocity.end());
+    all.affine.insert(all.affine.end(), p.affine.begin(), p.affine.end());
+    total.added += countPerSlab[k].added;
+    total.removed += countPerSlab[k].removed;
+  }
+  // Particles outside the grid (none in a closed box; sorted last) are kept as they are.
+  const std::size_t cells = static_cast<std::size_t>(ni) * nj * nk;
+  for (std::size_t p = index.start[cells]; p < particles.size(); ++p)
+    all.push(particles.position[p], particles.velocity[p]), all.affine.back() = particles.affine[p];
+  particles = std::move(all);
+  return total;
+}
+
+}  // namespace fluidsound::sim
