@@ -89,7 +89,10 @@ bool finite(const Vec3& a) {
 }
 
 std::string show(const Vec3& a) {
-  return "[" + show(a[0]) + ", " + show(a[1]) + ", " + show(a[2]) + "]";
+  // Appended piece by piece: g++ 12 warns falsely (-Wrestrict) on "[" + std::string&&.
+  std::string text = "[";
+  text.append(show(a[0])).append(", ").append(show(a[1])).append(", ").append(show(a[2])).append("]");
+  return text;
 }
 
 }  // namespace
