@@ -28,11 +28,7 @@ ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, con
         const std::size_t cell = (static_cast<std::size_t>(k) * nj + j) * ni + i;
         const std::size_t first = index.start[cell], held = index.start[cell + 1] - first;
         const std::size_t keep = std::min<std::size_t>(held, limits.maximum);
-        for (std::size_t p = first; p < first + keep; ++p) {
-          out.position.push_back(particles.position[p]);
-          out.velocity.push_back(particles.velocity[p]);
-          out.affine.push_back(particles.affine[p]);
-        }
+        for (std::size_t p = first; p < first + keep; ++p) out.pushFrom(particles, p);
         count.removed += held - keep;
         if (held >= static_cast<std::size_t>(limits.minimum) || liquidPhi(i, j, k) > inside) continue;
         std::mt19937_64 random(cellStream(seed ^ (pass * 0xD1B54A32D192ED03ull), cell));
@@ -48,25 +44,13 @@ ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, con
         }
       }
   });
-  Particles all;
+  Particles all = Particles::concatenate(perSlab);
   ReseedingCount total;
-  std::size_t size = 0;
-  for (const Particles& p : perSlab) size += p.size();
-  all.position.reserve(size);
-  all.velocity.reserve(size);
-  all.affine.reserve(size);
-  for (int k = 0; k < nk; ++k) {
-    const Particles& p = perSlab[k];
-    all.position.insert(all.position.end(), p.position.begin(), p.position.end());
-    all.velocity.insert(all.velocity.end(), p.velocity.begin(), p.velocity.end());
-    all.affine.insert(all.affine.end(), p.affine.begin(), p.affine.end());
-    total.added += countPerSlab[k].added;
-    total.removed += countPerSlab[k].removed;
-  }
+  for (const ReseedingCount& c : countPerSlab) total.added += c.added, total.removed += c.removed;
   // Particles outside the grid (none in a closed box; sorted last) are kept as they are.
   const std::size_t cells = static_cast<std::size_t>(ni) * nj * nk;
   for (std::size_t p = index.start[cells]; p < particles.size(); ++p)
-    all.push(particles.position[p], particles.velocity[p]), all.affine.back() = particles.affine[p];
+    all.pushFrom(particles, p);
   particles = std::move(all);
   return total;
 }

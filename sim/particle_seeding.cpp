@@ -91,18 +91,7 @@ Particles seedLiquid(const GridGeometry& grid, std::span<const LiquidRegion> reg
         }
       }
   });
-  Particles all;
-  std::size_t total = 0;
-  for (const Particles& p : perSlab) total += p.size();
-  all.position.reserve(total);
-  all.velocity.reserve(total);
-  all.affine.reserve(total);
-  for (const Particles& p : perSlab) {
-    all.position.insert(all.position.end(), p.position.begin(), p.position.end());
-    all.velocity.insert(all.velocity.end(), p.velocity.begin(), p.velocity.end());
-    all.affine.insert(all.affine.end(), p.affine.begin(), p.affine.end());
-  }
-  return all;
+  return Particles::concatenate(perSlab);
 }
 
 }  // namespace fluidsound::sim

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <array>
+
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace fluidsound::sim {
@@ -27,6 +29,27 @@ struct Particles {
     position.push_back(x);
     velocity.push_back(v);
     affine.push_back({});
+  }
+  /// Appends particle p of `other` (position, velocity and affine part).
+  void pushFrom(const Particles& other, std::size_t p) {
+    position.push_back(other.position[p]);
+    velocity.push_back(other.velocity[p]);
+    affine.push_back(other.affine[p]);
+  }
+  /// The concatenation of `parts`, in order (per-slab results of a parallel loop).
+  static Particles concatenate(std::span<const Particles> parts) {
+    Particles all;
+    std::size_t total = 0;
+    for (const Particles& p : parts) total += p.size();
+    all.position.reserve(total);
+    all.velocity.reserve(total);
+    all.affine.reserve(total);
+    for (const Particles& p : parts) {
+      all.position.insert(all.position.end(), p.position.begin(), p.position.end());
+      all.velocity.insert(all.velocity.end(), p.velocity.begin(), p.velocity.end());
+      all.affine.insert(all.affine.end(), p.affine.begin(), p.affine.end());
+    }
+    return all;
   }
 };
 
