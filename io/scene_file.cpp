@@ -45,6 +45,9 @@ constexpr double kMaxPressureTolerance = 1e-2;
 constexpr std::uint64_t kMaxParticlesPerCell = 64;
 /// Height of the default listener above the domain centre [m] (DESIGN.md).
 constexpr double kDefaultListenerHeight = 0.5;
+/// Output frames a scene may ask for (duration × fps): 9 h at 30 fps; far beyond a shot, and
+/// frame numbers stay well inside an int.
+constexpr int kMaxFrames = 1000000;
 
 /// Face names in the order of sim::Domain::open.
 constexpr std::array<std::string_view, 6> kFaceNames = {"-x", "+x", "-y", "+y", "-z", "+z"};
@@ -194,6 +197,10 @@ class SceneReader {
                                   positive);
     t.cfl = check_.optionalNumber(object, path, "cfl", t.cfl, "a number > 0 (cells per substep)",
                                   positive);
+    const double frames = t.duration * t.fps;
+    if (!(frames <= kMaxFrames))
+      check_.fail(path, "duration × fps ≤ " + std::to_string(kMaxFrames) + " frames",
+                  roundedNumber(frames, 6) + " frames");
     return t;
   }
 

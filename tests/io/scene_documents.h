@@ -68,13 +68,31 @@ inline json minimalScene() {
   })");
 }
 
+/// `document` with one change: the value at the JSON pointer `pointer` (RFC 6901,
+/// `/solids/1/path/0/t`) replaced by the JSON text `value` (a key that is not there is added), or
+/// that key removed when `value` is nullptr. The pointer's parent must exist, and so must a key
+/// to remove, so that a typo in a test cannot pass as some other error.
+inline json withChange(json document, const std::string& pointer, const char* value) {
+  const json::json_pointer at(pointer);
+  const json::json_pointer parent = at.parent_pointer();
+  EXPECT_TRUE(document.contains(parent)) << "no parent for " << pointer;
+  if (value == nullptr) {
+    EXPECT_TRUE(document.contains(at)) << "nothing to remove at " << pointer;
+    if (document.contains(at)) document.at(parent).erase(at.back());
+  } else {
+    document[at] = json::parse(value);
+  }
+  return document;
+}
+
 /// The InputError that parsing `text` as tank.json throws (a test failure if none).
 inline InputError parseError(const std::string& text) {
   return test::inputErrorOf([](const std::string& t) { parseScene(t, "tank.json"); }, text);
 }
 
 /// The error is one line that names tank.json, exactly `field`, and contains `expected`.
-inline void expectError(const InputError& error, const std::string& field, const std::string& expected) {
+inline void expectError(const InputError& error, const std::string& field,
+                        const std::string& expected) {
   test::expectInputError(error, "tank.json", field, expected, test::ExpectedAt::RightAfterHead);
 }
 

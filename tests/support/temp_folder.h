@@ -17,9 +17,11 @@ class TempFolder {
   TempFolder() {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
     std::random_device entropy;
-    path_ = std::filesystem::temp_directory_path() /
-            ("fluidsound-" + std::string(test->test_suite_name()) + "-" + test->name() + "-" +
-             std::to_string(entropy()));
+    std::string name = "fluidsound-" + std::string(test->test_suite_name()) + "-" + test->name() +
+                       "-" + std::to_string(entropy());
+    // Parameterised tests are named `Prefix/Suite.Test/param`: one folder, not nested ones.
+    std::replace(name.begin(), name.end(), '/', '-');
+    path_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::create_directories(path_);
   }
   ~TempFolder() {
