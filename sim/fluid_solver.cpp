@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include "sim/density_correction.h"
 #include "sim/liquid_surface.h"
 #include "sim/particle_advection.h"
 #include "sim/particle_reseeding.h"
@@ -27,6 +28,9 @@ constexpr int kExtraLayers = 2;
 /// Substeps are cut so that none is shorter than this fraction of the previous: avoids a tiny last
 /// substep before a frame boundary (the remainder is split evenly over two substeps instead).
 constexpr double kMinimumSubstepFraction = 0.25;
+/// Relative residual of the once-per-frame density correction's solve: it repeats every frame, so
+/// a loose solve suffices (5–8 multigrid-CG iterations).
+constexpr double kDensityCorrectionTolerance = 1e-3;
 /// Faces wholly inside solids move with the solid (after extrapolation filled them with liquid
 /// velocities): no particle is carried into a wall (Batty's Fluid3D `constrain_velocity`, here
 /// for the whole velocity of closed faces).
@@ -57,10 +61,16 @@ Array3f extendIntoSolids(const Array3f& liquidPhi, const Array3f& solidNodes, co
   return phi;
 }
 
+/// The domain with every face open: its solid distance is that of the scene's solids alone.
+Domain withoutWalls(Domain domain) {
+  domain.open.fill(true);
+  return domain;
+}
 }  // namespace
 
 struct FluidSolver::Workspace {
   Array3f solidNodes;                   ///< solid signed distance at nodes [m]
+  Array3f sceneSolidNodes;              ///< the same without the domain walls
   std::array<Array3f, 3> faceOpen;      ///< fraction of each face open to liquid [-]
   std::array<Array3f, 3> solidVelocity; ///< solid velocity at faces [m/s]
   std::array<Array3f, 3> weight;        ///< particle weight per face (P2G)
@@ -76,6 +86,7 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
   if (!scene.emitters.empty()) throw std::invalid_argument("emitters are not supported yet");
   for (const Solid& s : scene.solids) work_->solidsMove = work_->solidsMove || !s.path.empty();
   work_->solidNodes = solidNodeDistance(grid_, scene.domain, scene.solids, 0.0);
+  work_->sceneSolidNodes = solidNodeDistance(grid_, withoutWalls(scene.domain), scene.solids, 0.0);
   work_->faceOpen = faceOpenFractions(work_->solidNodes, grid_);
   work_->solidVelocity = solidFaceVelocity(grid_, scene.domain, scene.solids, 0.0);
   const int perCell = scene.solver.particlesPerCell;
@@ -91,6 +102,35 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
 }
 
 FluidSolver::~FluidSolver() = default;
+
+void FluidSolver::maintainParticles(FrameStats& stats) {
+  Workspace& w = *work_;
+  // 1. Spread clumps and fill thin spots by moving particles (positions only).
+  const CellIndex& before = sortParticlesByCell(particles_, grid_, w.transfer);
+  const Array3f particlePhi = liquidDistanceFromParticles(particles_, before, grid_, particleRadius_);
+  PressureSettings settings;
+  settings.tolerance = kDensityCorrectionTolerance;
+  settings.maxIterations = scene_.solver.maxPressureIterations;
+  const DensityCorrectionReport correction = correctParticleDensity(
+      particles_, before, extendIntoSolids(particlePhi, w.solidNodes, grid_), particlePhi, w.faceOpen, w.solidNodes,
+      w.sceneSolidNodes, scene_.domain, grid_, scene_.solver.particlesPerCell, w.pressure, settings);
+  stats.particlesDeleted += correction.particlesDeleted;
+  stats.densityIterations += correction.solve.iterations;
+  stats.maxDensityExcess = std::max(stats.maxDensityExcess, correction.maxExcess);
+  // 2. Refill liquid cells left with too few particles and thin what is still clumped. The surface
+  //    from before the correction decides which cells are liquid (the correction moves particles
+  //    by a fraction of a cell; the next substep rebuilds the surface anyway).
+  const CellIndex& after = sortParticlesByCell(particles_, grid_, w.transfer);
+  liquidPhi_ = particlePhi;
+  ReseedingLimits limits;
+  limits.target = scene_.solver.particlesPerCell;
+  limits.minimum = std::min(limits.minimum, limits.target);
+  limits.maximum = std::max(limits.maximum, 2 * limits.target);
+  const ReseedingCount count = reseedParticles(particles_, after, liquidPhi_, w.solidNodes, velocity_, grid_, limits,
+                                               scene_.seed, ++reseedPasses_);
+  stats.particlesReseeded += count.added;
+  stats.particlesThinned += count.removed;
+}
 
 double FluidSolver::stableTimeStep() const {
   // Bridson (2015) §3.3: u_max = max|u_p| + √(5 h |g|) bounds the speed reached in one step.
@@ -120,17 +160,10 @@ FrameStats FluidSolver::advanceTo(double until) {
     ++stats.substeps;
   }
   if (stats.substeps > 0) {
-    // Once per frame: refill liquid cells that particles have left and thin clumps.
-    const CellIndex& index = sortParticlesByCell(particles_, grid_, work_->transfer);
-    liquidPhi_ = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
-    ReseedingLimits limits;
-    limits.target = scene_.solver.particlesPerCell;
-    limits.minimum = std::min(limits.minimum, limits.target);
-    limits.maximum = std::max(limits.maximum, 2 * limits.target);
-    const ReseedingCount count = reseedParticles(particles_, index, liquidPhi_, work_->solidNodes, velocity_, grid_,
-                                                 limits, scene_.seed, ++reseedPasses_);
-    stats.particlesReseeded += count.added;
-    stats.particlesThinned += count.removed;
+    const auto start = std::chrono::steady_clock::now();
+    maintainParticles(stats);
+    stats.stageSeconds.particleMaintenance +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   stats.particles = particles_.size();
   stats.liquidVolume = liquidVolume(liquidPhi_, grid_);
@@ -145,6 +178,7 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
   Workspace& w = *work_;
   if (w.solidsMove) {
     w.solidNodes = solidNodeDistance(grid_, scene_.domain, scene_.solids, time_ + dt);
+    w.sceneSolidNodes = solidNodeDistance(grid_, withoutWalls(scene_.domain), scene_.solids, time_ + dt);
     w.faceOpen = faceOpenFractions(w.solidNodes, grid_);
     w.solidVelocity = solidFaceVelocity(grid_, scene_.domain, scene_.solids, time_ + dt);
   }

@@ -26,6 +26,8 @@ struct FrameStats {
   std::size_t particlesDeleted = 0; ///< left through open faces
   std::size_t particlesReseeded = 0; ///< added to liquid cells holding fewer than 4 (once per frame)
   std::size_t particlesThinned = 0;  ///< removed from cells holding more than 16
+  int densityIterations = 0;        ///< CG iterations of the density correction (once per frame)
+  double maxDensityExcess = 0.0;    ///< largest ρ/ρ₀ − ρ_expected it found [-]
   double liquidVolume = 0.0;        ///< [m³], from the level set at the frame's end
   double maxDivergence = 0.0;       ///< worst max|∇·u|·h/|u|max after a projection
   double maxSpeed = 0.0;            ///< fastest particle at the frame's end [m/s]
@@ -33,6 +35,14 @@ struct FrameStats {
   /// extrapolation, liquid surface, pressure, grid→particle, advection.
   struct StageSeconds {
     double transfer = 0.0, forces = 0.0, surface = 0.0, pressure = 0.0, gridToParticles = 0.0, advection = 0.0;
+    double particleMaintenance = 0.0;  ///< once per frame: density correction and reseeding
+    /// The substeps' stages (all but particleMaintenance).
+    double substepTotal() const { return transfer + forces + surface + pressure + gridToParticles + advection; }
+    StageSeconds& operator+=(const StageSeconds& o) {
+      transfer += o.transfer, forces += o.forces, surface += o.surface, pressure += o.pressure;
+      gridToParticles += o.gridToParticles, advection += o.advection, particleMaintenance += o.particleMaintenance;
+      return *this;
+    }
   } stageSeconds;
 };
 
@@ -67,6 +77,8 @@ class FluidSolver {
   struct Workspace;
   double substep(double dt, FrameStats& stats);
   double stableTimeStep() const;
+  /// Once per frame: the density correction, then reseeding (docs/solver.md, steps 10–11).
+  void maintainParticles(FrameStats& stats);
 
   Scene scene_;
   FluidProperties properties_;

@@ -76,7 +76,7 @@ std::ostream& operator<<(std::ostream& out, const PressureReport& r) {
 void PressureSolver::assemble(const MacVelocity& velocity, const Array3f& liquidPhi,
                               const std::array<Array3f, 3>& faceOpen,
                               const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,
-                              double density, double dt) {
+                              double density, double dt, const Array3f* targetDivergence) {
   // Number the unknowns in grid order (x fastest), as the MIC(0) sweep requires.
   unknownOfCell_ = Array3<std::int32_t>(grid.cells, -1);
   std::int32_t count = 0;
@@ -121,6 +121,7 @@ void PressureSolver::assemble(const MacVelocity& velocity, const Array3f& liquid
             }
           }
         rhs_[row] = -weightedNetOutflow(velocity, faceOpen, &solidVelocity, c) / grid.cellSize;
+        if (targetDivergence != nullptr) rhs_[row] += (*targetDivergence)(c[0], c[1], c[2]);
       }
 }
 
@@ -167,7 +168,8 @@ PressureReport PressureSolver::project(MacVelocity& velocity, const Array3f& liq
                                        const std::array<Array3f, 3>& faceOpen,
                                        const std::array<Array3f, 3>& solidVelocity,
                                        const GridGeometry& grid, double density, double dt,
-                                       const PressureSettings& settings) {
+                                       const PressureSettings& settings, const Array3f* targetDivergence) {
+  if (targetDivergence != nullptr) requireSize(targetDivergence->size(), grid.cells, "targetDivergence");
   requireSize(liquidPhi.size(), grid.cells, "liquidPhi");
   for (int a = 0; a < 3; ++a) {
     const std::string axis = std::to_string(a);
@@ -180,7 +182,7 @@ PressureReport PressureSolver::project(MacVelocity& velocity, const Array3f& liq
                                 " kg/m³, dt " + std::to_string(dt) + " s and cell size " +
                                 std::to_string(grid.cellSize) + " m must all be > 0");
 
-  assemble(velocity, liquidPhi, faceOpen, solidVelocity, grid, density, dt);
+  assemble(velocity, liquidPhi, faceOpen, solidVelocity, grid, density, dt, targetDivergence);
   PcgResult solve;
   if (settings.preconditioner == Preconditioner::Multigrid) {
     multigrid_.build(unknownOfCell_, faceOpen, dt / (density * grid.cellSize * grid.cellSize));

@@ -84,11 +84,15 @@ class PressureSolver {
   /// @param solidVelocity  solidFaceVelocity(…) [m/s] per axis (zero arrays for static solids)
   /// @param density        ρ [kg/m³], > 0
   /// @param dt             Δt [s], > 0
+  /// @param targetDivergence  if given, the divergence [1/s] each liquid cell should have after
+  ///                          the projection instead of 0 (size grid.cells): divergence control
+  ///                          (Kim et al. 2007), used for the particle density correction
   /// @throws std::invalid_argument if an array's size does not match the grid, or ρ, Δt or h ≤ 0
   PressureReport project(MacVelocity& velocity, const Array3f& liquidPhi,
                          const std::array<Array3f, 3>& faceOpen,
                          const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,
-                         double density, double dt, const PressureSettings& settings);
+                         double density, double dt, const PressureSettings& settings,
+                         const Array3f* targetDivergence = nullptr);
 
   /// Cell-centred pressure [Pa] of the last projection, relative to the air (p = 0); 0 in cells
   /// that were not unknowns. Size grid.cells.
@@ -101,7 +105,7 @@ class PressureSolver {
  private:
   void assemble(const MacVelocity& velocity, const Array3f& liquidPhi,
                 const std::array<Array3f, 3>& faceOpen, const std::array<Array3f, 3>& solidVelocity,
-                const GridGeometry& grid, double density, double dt);
+                const GridGeometry& grid, double density, double dt, const Array3f* targetDivergence);
   void updateVelocity(MacVelocity& velocity, const Array3f& liquidPhi,
                       const std::array<Array3f, 3>& faceOpen,
                       const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,

@@ -122,6 +122,8 @@ int runSimulateCommand(const SimulateOptions& o) {
                         {"cg_converged", stats.pressureConverged}, {"particles", solver.particles().size()},
                         {"particles_deleted", stats.particlesDeleted},
                         {"particles_reseeded", stats.particlesReseeded}, {"particles_thinned", stats.particlesThinned},
+                        {"density_cg_iterations", stats.densityIterations},
+                        {"max_density_excess", stats.maxDensityExcess},
                         {"liquid_volume", stats.liquidVolume},
                         {"max_divergence", stats.maxDivergence}, {"max_speed", stats.maxSpeed},
                         {"bubbles_alive", 0}, {"seconds", seconds}});

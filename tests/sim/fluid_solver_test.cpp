@@ -1,5 +1,6 @@
 // Tests of sim/fluid_solver.h: whole substeps of the liquid solver on coarse grids.
 #include "sim/fluid_solver.h"
+#include "sim/liquid_surface.h"
 
 #include <gtest/gtest.h>
 #include <oneapi/tbb/task_arena.h>
@@ -41,22 +42,28 @@ TEST(FluidSolver, DamBreakStaysDivergenceFreeAndConverges) {
   EXPECT_GT(stats.maxSpeed, 1.0) << "the column must be collapsing: ~√(2 g 0.2 m) ≈ 2 m/s";
 }
 
-// No particle is lost in a closed box (the count changes only by reseeding's refills and
-// thinning), and the liquid keeps its cells: the count of cells with φ < 0 stays within 5 % of
-// the initial 1000 over 1 s (a level-set measure of volume).
-TEST(FluidSolver, DamBreakKeepsParticlesAndLiquidCells) {
-  FluidSolver solver(damBreak());
-  const std::size_t particles = solver.particles().size();
-  const auto liquidCells = [&] {
-    int n = 0;
-    for (float v : solver.liquidDistance().values()) n += v < 0.0f;
-    return n;
-  };
-  const int initial = liquidCells();
-  const FrameStats stats = solver.advanceTo(1.0);
-  EXPECT_EQ(solver.particles().size(), particles + stats.particlesReseeded - stats.particlesThinned);
-  EXPECT_EQ(stats.particlesDeleted, 0u);
-  EXPECT_NEAR(liquidCells(), initial, 0.05 * initial);
+// Claim (issue 4): the liquid volume changes by less than 2 % over 3 s of a dam break — by
+// particle count at every frame, and by the level set at the end (the column 0.1 × 0.2 m of
+// scenes/dam_break.scene.json, 1 cm cells, advanced frame by frame at 30 fps as `simulate` does,
+// so the once-per-frame density correction and reseeding run). Measured: particles −0.8 %
+// (clumps thinned above 16 per cell), level set +1.2 % at 3 s. The level set swells by up to
+// 17 % while the splash is in the air (sheets thinner than a cell read as ~0.8 cell thick), so it
+// is compared only once the liquid has landed. Reference: frame 0. Tolerance: the issue's 2 %.
+TEST(FluidSolver, DamBreakKeepsItsVolumeForThreeSeconds) {
+  Scene scene = damBreak();
+  scene.domain.max[2] = 0.1;
+  scene.liquid[0].shape = Box{{0, 0, 0}, {0.1, 0.2, 0.1}};
+  FluidSolver solver(scene);
+  const double particles = static_cast<double>(solver.particles().size());
+  const double volume = liquidVolume(solver.liquidDistance(), solver.grid());
+  FrameStats stats;
+  for (int frame = 1; frame <= 90; ++frame) {
+    stats = solver.advanceTo(frame / 30.0);
+    ASSERT_NEAR(static_cast<double>(stats.particles), particles, 0.02 * particles) << "frame " << frame;
+    ASSERT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
+    ASSERT_EQ(stats.particlesDeleted, 0u) << "a closed box loses nothing";
+  }
+  EXPECT_NEAR(stats.liquidVolume, volume, 0.02 * volume);
   for (const Vec3f& x : solver.particles().position) {
     ASSERT_GE(x[1], 0.0f);
     ASSERT_LE(x[0], 0.5f);
@@ -79,10 +86,10 @@ TEST(FluidSolver, IdenticalParticlesForAnyThreadCount) {
   EXPECT_EQ(one, two);
 }
 
-// A tank at rest stays nearly at rest. The issue's goal is < 1 mm/s after 2 s; the current
-// particle surface (Zhu–Bridson, bumps of ~0.3 cell) drives currents: measured 2.4 cm/s at
-// 0.5 s, 0.9 cm/s at 2 s. This is a regression bound (3 cm/s at 0.5 s), not the goal — a known
-// gap, recorded in docs/solver.md.
+// A tank at rest stays nearly at rest. The issue's goal is < 1 mm/s after 2 s; the particle
+// surface (Zhu–Bridson, bumps of ~0.1 cell from the jittered seeding) drives currents: measured
+// 2.7 cm/s at 0.5 s, 1.4 cm/s at 1 s, 0.6 cm/s at 2 s. This is a regression bound (3 cm/s at
+// 0.5 s), not the goal — a known gap, recorded in docs/solver.md.
 TEST(FluidSolver, RestingTankStaysNearlyAtRest) {
   FluidSolver solver(tank(0.0735));
   const FrameStats stats = solver.advanceTo(0.5);

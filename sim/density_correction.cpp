@@ -1,0 +1,141 @@
+// sim/density_correction.cpp — see density_correction.h.
+#include "sim/density_correction.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "sim/particle_advection.h"
+#include "sim/velocity_extrapolation.h"
+
+namespace fluidsound::sim {
+namespace {
+/// Cells of displacement extended beyond the liquid: particles near the surface read D there.
+constexpr int kExtendedLayers = 2;
+/// Trilinear interpolation of a cell-centred field at world position p, clamped to the centres.
+double interpolateCentres(const Array3f& field, const GridGeometry& grid, const Vec3& p) {
+  const Vec3 g = grid.gridFromWorld(p);
+  int i[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double c = std::clamp(g[a] - 0.5, 0.0, static_cast<double>(grid.cells[a] - 1));
+    i[a] = std::min(static_cast<int>(c), std::max(grid.cells[a] - 2, 0));
+    f[a] = c - i[a];
+  }
+  double v = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const int d[3] = {c & 1, (c >> 1) & 1, c >> 2};
+    double w = 1.0;
+    for (int a = 0; a < 3; ++a) w *= d[a] ? f[a] : 1.0 - f[a];
+    v += w * field(std::min(i[0] + d[0], grid.cells[0] - 1), std::min(i[1] + d[1], grid.cells[1] - 1),
+                   std::min(i[2] + d[2], grid.cells[2] - 1));
+  }
+  return v;
+}
+
+/// ρ/ρ₀ that relativeParticleDensity would read at cell (i, j, k) for particles spread evenly
+/// through the liquid that φ describes: the tent-weighted liquid fraction of the cell's tent
+/// support [−h, h]³, from 4 × 4 × 4 samples of φ (each 0.5 h wide, liquid fraction
+/// clamp(½ − φ/(0.5 h), 0, 1)). 1 deep inside, 0 far outside; 7/8 half a cell below a flat
+/// surface. Correcting against it, not against 1, leaves a uniform liquid's surface alone.
+double expectedDensity(const Array3f& phi, const GridGeometry& grid, int i, int j, int k) {
+  const double h = grid.cellSize, value = phi(i, j, k);
+  if (value <= -1.5 * h) return 1.0;
+  if (value >= 1.5 * h) return 0.0;
+  constexpr double offset[4] = {-0.75, -0.25, 0.25, 0.75}, weight[4] = {0.125, 0.375, 0.375, 0.125};
+  const Vec3 centre = grid.cellCentre(i, j, k);
+  double sum = 0.0;
+  for (int c = 0; c < 64; ++c) {
+    const int a = c & 3, b = (c >> 2) & 3, d = c >> 4;
+    const Vec3 x{centre[0] + offset[a] * h, centre[1] + offset[b] * h, centre[2] + offset[d] * h};
+    const double liquid = std::clamp(0.5 - interpolateCentres(phi, grid, x) / (0.5 * h), 0.0, 1.0);
+    sum += weight[a] * weight[b] * weight[d] * liquid;
+  }
+  return sum;
+}
+}  // namespace
+
+Array3f relativeParticleDensity(const Particles& particles, const CellIndex& index, const GridGeometry& grid,
+                                int perCell) {
+  const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
+  const double h = grid.cellSize;
+  Array3f density(grid.cells, 0.0f);
+  tbb::parallel_for(0, nk, [&](int k) {
+    for (int j = 0; j < nj; ++j)
+      for (int i = 0; i < ni; ++i) {
+        const Vec3 centre = grid.cellCentre(i, j, k);
+        const int cell[3] = {i, j, k};
+        double sum = 0.0;
+        for (int ck = std::max(k - 1, 0); ck <= std::min(k + 1, nk - 1); ++ck)
+          for (int cj = std::max(j - 1, 0); cj <= std::min(j + 1, nj - 1); ++cj) {
+            const std::size_t row = (static_cast<std::size_t>(ck) * nj + cj) * ni;
+            const std::size_t end = index.start[row + std::min(i + 1, ni - 1) + 1];
+            for (std::size_t p = index.start[row + std::max(i - 1, 0)]; p < end; ++p) {
+              double w = 1.0;
+              for (int a = 0; a < 3; ++a) {
+                const double x = particles.position[p][a];
+                // A particle between the first (last) centre and the grid boundary gives it the
+                // weight the missing centre beyond would get, so a uniform liquid against a
+                // wall reads 1 there too (else 7/8 per wall, and the thin-out correction would
+                // pull particles into walls and corners).
+                const bool folded = (cell[a] == 0 && x < centre[a]) || (cell[a] == grid.cells[a] - 1 && x > centre[a]);
+                w *= folded ? 1.0 : std::max(0.0, 1.0 - std::abs(x - centre[a]) / h);
+              }
+              sum += w;
+            }
+          }
+        density(i, j, k) = static_cast<float>(sum / perCell);
+      }
+  });
+  return density;
+}
+
+DensityCorrectionReport correctParticleDensity(Particles& particles, const CellIndex& index,
+                                               const Array3f& pressurePhi, const Array3f& particlePhi,
+                                               const std::array<Array3f, 3>& faceOpen,
+                                               const Array3f& solidNodes, const Array3f& sceneSolidNodes,
+                                               const Domain& domain,
+                                               const GridGeometry& grid, int perCell, PressureSolver& solver,
+                                               const PressureSettings& settings) {
+  DensityCorrectionReport report;
+  const Array3f density = relativeParticleDensity(particles, index, grid, perCell);
+  const double h = grid.cellSize;
+  Array3f strain(grid.cells, 0.0f);  // target divergence of D [-] (D in metres, "Δt" = 1)
+  std::vector<double> maxExcessOfSlab(static_cast<std::size_t>(grid.cells[2]), 0.0);
+  tbb::parallel_for(0, grid.cells[2], [&](int k) {
+    double& maxExcess = maxExcessOfSlab[k];
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i) {
+        const double phi = pressurePhi(i, j, k);
+        if (phi >= 0.0) continue;
+        double solid = 0.0;  // solid distance at the centre: mean of the 8 nodes [m]
+        for (int c = 0; c < 8; ++c) solid += sceneSolidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
+        solid /= 8.0;
+        if (solid <= 0.0) continue;  // a cell inside a solid holds no particles by design
+        const double excess = density(i, j, k) - expectedDensity(particlePhi, grid, i, j, k);
+        // Next to a solid the trilinear density reads low (no particles beyond the wall): only
+        // clumps are corrected there, or particles would be drawn into the wall.
+        const double s = solid < h ? std::max(excess, 0.0) : excess;
+        strain(i, j, k) = static_cast<float>(s);
+        maxExcess = std::max(maxExcess, excess);
+      }
+  });
+  for (double m : maxExcessOfSlab) report.maxExcess = std::max(report.maxExcess, m);
+  MacVelocity displacement(grid);
+  const std::array<Array3f, 3> noSolidMotion{Array3f(grid.faceCount(0), 0.0f), Array3f(grid.faceCount(1), 0.0f),
+                                             Array3f(grid.faceCount(2), 0.0f)};
+  // With "density" 1 and "Δt" 1 the projection's update is D −= ∇q/h·h: a displacement in metres.
+  report.solve = solver.project(displacement, pressurePhi, faceOpen, noSolidMotion, grid, 1.0, 1.0, settings, &strain);
+  extrapolateVelocity(displacement, solver.validFaces(), kExtendedLayers);
+  for (int a = 0; a < 3; ++a) {  // no displacement through walls
+    auto& d = displacement[a].values();
+    const auto& open = faceOpen[a].values();
+    for (std::size_t f = 0; f < d.size(); ++f)
+      if (open[f] <= 0.0f) d[f] = 0.0f;
+  }
+  report.particlesDeleted = advectParticles(particles, displacement, grid, solidNodes, domain, 1.0);
+  return report;
+}
+
+}  // namespace fluidsound::sim
