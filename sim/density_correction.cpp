@@ -6,6 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "sim/cell_interpolation.h"
 #include "sim/particle_advection.h"
 #include "sim/velocity_extrapolation.h"
 
@@ -13,27 +14,6 @@ namespace fluidsound::sim {
 namespace {
 /// Cells of displacement extended beyond the liquid: particles near the surface read D there.
 constexpr int kExtendedLayers = 2;
-/// Trilinear interpolation of a cell-centred field at world position p, clamped to the centres.
-double interpolateCentres(const Array3f& field, const GridGeometry& grid, const Vec3& p) {
-  const Vec3 g = grid.gridFromWorld(p);
-  int i[3];
-  double f[3];
-  for (int a = 0; a < 3; ++a) {
-    const double c = std::clamp(g[a] - 0.5, 0.0, static_cast<double>(grid.cells[a] - 1));
-    i[a] = std::min(static_cast<int>(c), std::max(grid.cells[a] - 2, 0));
-    f[a] = c - i[a];
-  }
-  double v = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const int d[3] = {c & 1, (c >> 1) & 1, c >> 2};
-    double w = 1.0;
-    for (int a = 0; a < 3; ++a) w *= d[a] ? f[a] : 1.0 - f[a];
-    v += w * field(std::min(i[0] + d[0], grid.cells[0] - 1), std::min(i[1] + d[1], grid.cells[1] - 1),
-                   std::min(i[2] + d[2], grid.cells[2] - 1));
-  }
-  return v;
-}
-
 /// ρ/ρ₀ that relativeParticleDensity would read at cell (i, j, k) for particles spread evenly
 /// through the liquid that φ describes: the tent-weighted liquid fraction of the cell's tent
 /// support [−h, h]³, from 4 × 4 × 4 samples of φ (each 0.5 h wide, liquid fraction
@@ -49,7 +29,7 @@ double expectedDensity(const Array3f& phi, const GridGeometry& grid, int i, int 
   for (int c = 0; c < 64; ++c) {
     const int a = c & 3, b = (c >> 2) & 3, d = c >> 4;
     const Vec3 x{centre[0] + offset[a] * h, centre[1] + offset[b] * h, centre[2] + offset[d] * h};
-    const double liquid = std::clamp(0.5 - interpolateCentres(phi, grid, x) / (0.5 * h), 0.0, 1.0);
+    const double liquid = std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (0.5 * h), 0.0, 1.0);
     sum += weight[a] * weight[b] * weight[d] * liquid;
   }
   return sum;

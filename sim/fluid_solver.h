@@ -24,6 +24,7 @@ struct FrameStats {
   bool pressureConverged = true;
   std::size_t particles = 0;
   std::size_t particlesDeleted = 0; ///< left through open faces
+  std::size_t particlesEmitted = 0; ///< added by the scene's emitters
   std::size_t particlesReseeded = 0; ///< added to liquid cells holding fewer than 4 (once per frame)
   std::size_t particlesThinned = 0;  ///< removed from cells holding more than 16
   int densityIterations = 0;        ///< CG iterations of the density correction (once per frame)
@@ -77,6 +78,8 @@ class FluidSolver {
   struct Workspace;
   double substep(double dt, FrameStats& stats);
   double stableTimeStep() const;
+  /// The liquid distance at cell centres from the sorted particles.
+  Array3f surfaceFromParticles(const struct CellIndex& index) const;
   /// Once per frame: the density correction, then reseeding (docs/solver.md, steps 10–11).
   void maintainParticles(FrameStats& stats);
 

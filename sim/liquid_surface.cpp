@@ -9,6 +9,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "sim/cell_interpolation.h"
+
 namespace fluidsound::sim {
 namespace {
 /// φ far from any particle, as a multiple of the kernel radius: only the sign and the values
@@ -107,9 +109,31 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
 
 double liquidVolume(const Array3f& phi, const GridGeometry& grid) {
   const double h = grid.cellSize;
-  double fraction = 0.0;
-  for (float v : phi.values()) fraction += std::clamp(0.5 - v / h, 0.0, 1.0);
-  return fraction * h * h * h;
+  constexpr int kSamples = 4;                 // per axis and cell
+  constexpr double kWidth = 1.0 / kSamples;   // sample spacing [cells]
+  std::vector<double> perSlab(static_cast<std::size_t>(grid.cells[2]), 0.0);
+  tbb::parallel_for(0, grid.cells[2], [&](int k) {
+    double sum = 0.0;
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i) {
+        const double centre = phi(i, j, k);
+        if (centre <= -h) { sum += 1.0; continue; }  // a cell away from the surface is all liquid…
+        if (centre >= h) continue;                    // …or all air
+        const Vec3 corner = grid.worldFromGrid({double(i), double(j), double(k)});
+        double fraction = 0.0;
+        for (int s = 0; s < kSamples * kSamples * kSamples; ++s) {
+          const Vec3 x{corner[0] + (s % kSamples + 0.5) * kWidth * h,
+                       corner[1] + ((s / kSamples) % kSamples + 0.5) * kWidth * h,
+                       corner[2] + (s / (kSamples * kSamples) + 0.5) * kWidth * h};
+          fraction += std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (kWidth * h), 0.0, 1.0);
+        }
+        sum += fraction / (kSamples * kSamples * kSamples);
+      }
+    perSlab[k] = sum;
+  });
+  double cells = 0.0;
+  for (double s : perSlab) cells += s;  // in slab order: the same sum for any thread count
+  return cells * h * h * h;
 }
 
 }  // namespace fluidsound::sim

@@ -62,9 +62,6 @@ std::string frameName(int frame, const char* extension) {
 /// 3) naming the first such field, before any output is made.
 void requireSupportedByTheSolver(const sim::Scene& scene) {
   const std::string file = scene.file.string();
-  if (!scene.emitters.empty())
-    throw io::InputError(file, "emitters", "no emitters (not supported by the solver yet)",
-                         std::to_string(scene.emitters.size()) + " emitter(s)");
   for (std::size_t i = 0; i < scene.liquid.size(); ++i)
     if (std::holds_alternative<sim::MeshFile>(scene.liquid[i].shape))
       throw io::InputError(file, "liquid[" + std::to_string(i) + "].mesh",
@@ -120,7 +117,7 @@ int runSimulateCommand(const SimulateOptions& o) {
     perFrame.push_back({{"frame", f}, {"time", solver.time()}, {"substeps", stats.substeps},
                         {"cg_iterations", stats.pressureIterations}, {"cg_residual", stats.pressureResidual},
                         {"cg_converged", stats.pressureConverged}, {"particles", solver.particles().size()},
-                        {"particles_deleted", stats.particlesDeleted},
+                        {"particles_deleted", stats.particlesDeleted}, {"particles_emitted", stats.particlesEmitted},
                         {"particles_reseeded", stats.particlesReseeded}, {"particles_thinned", stats.particlesThinned},
                         {"density_cg_iterations", stats.densityIterations},
                         {"max_density_excess", stats.maxDensityExcess},

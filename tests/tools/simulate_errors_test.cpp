@@ -58,8 +58,7 @@ struct SimulateCase {
 };
 
 /// fullScene() on a grid small and short enough (12 × 6 × 2 cells, frames 0 … 3) that it
-/// simulates in a fraction of a second; without emitters, which the solver does not simulate yet
-/// (docs/solver.md), so that the OUTDIR rows fail for their OUTDIR alone.
+/// simulates in a fraction of a second (without emitters: fewer particles).
 json tinyScene() {
   json document = fullScene();
   document["domain"]["cell"] = 0.05;
@@ -90,12 +89,6 @@ const std::vector<SimulateCase> kSimulateCases = {
           "speed": 1.0, "start": 0.25, "end": 0.1}])",
      Output::Fresh, "out", kExitBadInput, "scene.json",
      "emitters[0].end: expected a number > start = 0.25 (seconds), found 0.1"},
-    // A valid emitter the solver cannot run yet: bad input naming the block, not an internal error.
-    {"emitters_not_simulated_yet", Input::Scene, "/emitters",
-     R"([{"disk": {"center": [0.3, 0.25, 0.05], "normal": [0, -1, 0], "radius": 0.004},
-          "speed": 1.0, "start": 0.0, "end": 0.1}])",
-     Output::Fresh, "out", kExitBadInput, "scene.json",
-     "emitters: expected no emitters (not supported by the solver yet), found 1 emitter(s)"},
     {"solids", Input::Scene, "/solids/1/path/1/t", "0.0", Output::Fresh, "out", kExitBadInput,
      "scene.json",
      "solids[1].path[1].t: expected a time greater than path[0].t = 0.0 (keys in time order; "
