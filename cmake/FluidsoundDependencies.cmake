@@ -3,6 +3,7 @@
 find_package(TBB 2021 CONFIG REQUIRED)                 # parallel loops
 find_package(Eigen3 3.4 CONFIG REQUIRED)               # linear algebra, FFT (unsupported/Eigen/FFT)
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)       # scene and bubble-track files
+find_package(tinyobjloader CONFIG REQUIRED)            # OBJ meshes (version "2rc10": no version test)
 find_package(CLI11 CONFIG REQUIRED)                    # command line
 find_package(GTest CONFIG REQUIRED)                    # tests
 find_package(benchmark CONFIG REQUIRED)                # benchmarks

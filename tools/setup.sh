@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev libtbb-dev libsndfile1-dev
   libopenvdb-dev libboost-iostreams-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev
+  libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
   libcairo2-dev
   python3 time        # tools/make_example_bubbles.py and tools/bench.sh only
 )
