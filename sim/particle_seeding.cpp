@@ -33,7 +33,13 @@ double regionDistance(const LiquidRegion& region, const Vec3& p) {
     const double dx = p[0] - s->center[0], dy = p[1] - s->center[1], dz = p[2] - s->center[2];
     return std::sqrt(dx * dx + dy * dy + dz * dz) - s->radius;
   }
-  throw std::invalid_argument("liquid mesh regions are not supported yet");
+  return meshDistance(std::get<MeshFile>(region.shape), p);
+}
+
+double meshDistance(const MeshFile& mesh, const Vec3& p) {
+  if (!mesh.distance)
+    throw std::invalid_argument(mesh.file.string() + ": the mesh's distance was not loaded (io::loadSceneMeshes)");
+  return interpolateNodes(mesh.distance->nodes, mesh.distance->grid, p);
 }
 
 float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec3& p) {
@@ -56,9 +62,6 @@ float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec
 
 Particles seedLiquid(const GridGeometry& grid, std::span<const LiquidRegion> regions,
                      const Array3f& solidNodeDistance, int perCell, std::uint64_t seed) {
-  for (const LiquidRegion& r : regions)
-    if (std::holds_alternative<MeshFile>(r.shape))
-      throw std::invalid_argument("liquid mesh regions are not supported yet");
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const int strata = static_cast<int>(std::lround(std::cbrt(perCell)));
   // Each cell seeds into its own slot; slots are concatenated in cell order (deterministic).

@@ -5,11 +5,13 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "sim/array3.h"
 #include "sim/grid.h"
 
 namespace fluidsound::sim {
@@ -27,10 +29,21 @@ struct Sphere {
   bool operator==(const Sphere&) const = default;
 };
 
+/// A mesh's signed distance sampled at the nodes of a grid [m], negative inside, clamped to a
+/// band of a few cells: io fills it when it loads a scene's meshes (io/scene_meshes.h) and the
+/// solver interpolates it (meshDistance in sim/particle_seeding.h).
+struct MeshNodeDistance {
+  GridGeometry grid;  ///< the nodes are origin + (i, j, k)·cellSize
+  Array3f nodes;      ///< size grid.nodeCount()
+};
+
 /// A triangle mesh file (OBJ or PLY), path resolved against the scene file's folder.
 struct MeshFile {
   std::filesystem::path file;
-  bool operator==(const MeshFile&) const = default;
+  /// The mesh placed by its solid's scale and translation (not its path), once loaded.
+  std::shared_ptr<const MeshNodeDistance> distance{};
+  /// Two references are equal when they name the same file (the distance follows from it).
+  bool operator==(const MeshFile& other) const { return file == other.file; }
 };
 
 using Shape = std::variant<Box, Sphere, MeshFile>;

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <variant>
 
+#include "sim/particle_seeding.h"
+
 namespace fluidsound::sim {
 namespace {
 
@@ -53,8 +55,11 @@ struct PlacedSolid {
   double radius = 0.0;    ///< sphere radius [m]
   Vec3 velocity{};        ///< [m/s]
 
+  const MeshFile* mesh = nullptr;  ///< a loaded mesh (centre = its path translation), else null
+
   double distance(const Vec3& p) const {
     const Vec3 d{p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+    if (mesh != nullptr) return meshDistance(*mesh, d);
     if (!isBox) return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - radius;
     const Vec3 q = localFromWorld(worldFromLocal, d);
     double outsideSquared = 0.0;
@@ -72,12 +77,15 @@ std::vector<PlacedSolid> placeSolids(std::span<const Solid> solids, double time)
   std::vector<PlacedSolid> placed;
   placed.reserve(solids.size());
   for (const Solid& solid : solids) {
-    if (std::holds_alternative<MeshFile>(solid.shape))
-      throw std::invalid_argument("mesh solids are not supported yet");
     const Vec3 path = pathTranslation(solid.path, time);
     PlacedSolid s;
     s.velocity = pathVelocity(solid.path, time);
-    if (const Box* box = std::get_if<Box>(&solid.shape)) {
+    if (const MeshFile* mesh = std::get_if<MeshFile>(&solid.shape)) {
+      if (!mesh->distance)
+        throw std::invalid_argument(mesh->file.string() + ": the mesh's distance was not loaded (io::loadSceneMeshes)");
+      s.mesh = mesh;
+      s.centre = path;  // the mesh is placed by scale and translation already; the path shifts it
+    } else if (const Box* box = std::get_if<Box>(&solid.shape)) {
       s.isBox = true;
       s.worldFromLocal = rotationFromEulerDegrees(solid.rotateDegrees);
       for (int a = 0; a < 3; ++a) {

@@ -36,7 +36,7 @@ inline constexpr double kSolidSnapFraction = 1e-6;
 /// @param solids  static or kinematic solids (Solid::path)
 /// @param time    [s], the time at which kinematic solids are placed
 /// @return Array3f of size grid.nodeCount(), [m]
-/// @throws std::invalid_argument for a MeshFile solid ("mesh solids are not supported yet")
+/// @throws std::invalid_argument for a MeshFile solid whose distance was not loaded
 Array3f solidNodeDistance(const GridGeometry& grid, const Domain& domain,
                           std::span<const Solid> solids, double time);
 
@@ -76,7 +76,7 @@ Vec3 pathVelocity(const std::vector<PathKey>& path, double time);
 ///        distances as solidNodeDistance; domain walls and solids without a path are at rest.
 ///        Used by the pressure projection as u_solid on the covered part (1 − weight) of a face.
 /// @return per axis an Array3f of size grid.faceCount(axis) [m/s]; all zero when no solid moves
-/// @throws std::invalid_argument for a MeshFile solid
+/// @throws std::invalid_argument for a MeshFile solid whose distance was not loaded
 std::array<Array3f, 3> solidFaceVelocity(const GridGeometry& grid, const Domain& domain,
                                          std::span<const Solid> solids, double time);
 

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
-#include <variant>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -15,6 +14,7 @@
 #include "io/frame_files.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
+#include "io/scene_meshes.h"
 #include "io/text_file.h"
 #include "sim/fluid_solver.h"
 #include "sim/liquid_surface.h"
@@ -58,27 +58,13 @@ std::string frameName(int frame, const char* extension) {
   return name;
 }
 
-/// Scene features the contract allows but this solver does not run yet: a bad-input error (exit
-/// 3) naming the first such field, before any output is made.
-void requireSupportedByTheSolver(const sim::Scene& scene) {
-  const std::string file = scene.file.string();
-  for (std::size_t i = 0; i < scene.liquid.size(); ++i)
-    if (std::holds_alternative<sim::MeshFile>(scene.liquid[i].shape))
-      throw io::InputError(file, "liquid[" + std::to_string(i) + "].mesh",
-                           "a box or sphere (mesh regions are not supported by the solver yet)", "a mesh");
-  for (std::size_t i = 0; i < scene.solids.size(); ++i)
-    if (std::holds_alternative<sim::MeshFile>(scene.solids[i].shape))
-      throw io::InputError(file, "solids[" + std::to_string(i) + "].mesh",
-                           "a box or sphere (mesh solids are not supported by the solver yet)", "a mesh");
-}
-
 }  // namespace
 
 int runSimulateCommand(const SimulateOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const sim::Scene scene = io::readScene(o.scene);
-  requireSupportedByTheSolver(scene);
+  sim::Scene scene = io::readScene(o.scene);
+  io::loadSceneMeshes(scene);
   const int total = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
   const FrameRange range = parseFrames(o.frames, total);
   const std::filesystem::path out = o.output, frames = out / "frames";

@@ -1,0 +1,19 @@
+// io/scene_meshes.h — loading the meshes a scene names (`liquid[i].mesh`, `solids[i].mesh`) into
+// the scene: each becomes a signed distance at the solver grid's nodes that the simulation reads.
+#pragma once
+
+#include "sim/scene.h"
+
+namespace fluidsound::io {
+
+/// @brief For every mesh liquid region and mesh solid of `scene`: reads the file
+///        (io/mesh_file.h), requires it closed, places it (solids: scale, then translate; liquid
+///        regions as written) and fills MeshFile::distance with its signed distance at the nodes
+///        of scene.grid() (io/mesh_distance.h). A kinematic mesh solid's path then shifts that
+///        field (sim/solid_geometry.h).
+/// @throws InputError naming the scene file and the field (`solids[2].mesh`) for a missing,
+///         malformed or open mesh, and for `solids[i].rotate` on a mesh (not applied to meshes
+///         yet: rotate the mesh file itself)
+void loadSceneMeshes(sim::Scene& scene);
+
+}  // namespace fluidsound::io
