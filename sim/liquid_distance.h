@@ -1,0 +1,63 @@
+// sim/liquid_distance.h — bubble model input: the true signed distance to the free surface,
+// rebuilt from the solver's liquid field. The solver's φ (Zhu & Bridson 2005, liquid_surface.h)
+// is a distance only within about a particle radius of the surface; deeper it stays near −r, so it
+// cannot give a particle's or a bubble's depth.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "sim/array3.h"
+#include "sim/grid.h"
+
+namespace fluidsound::sim {
+
+/// @brief The signed distance to the surface where φ = 0, negative in the liquid (φ < 0):
+///        on the grid within a band of the surface, and exactly (to the surface points) anywhere.
+///
+/// Surface points: each cell next to the surface (a 6-neighbour of the other phase) holds the foot
+/// of its perpendicular on the plane through its nearest crossing per axis, each crossing placed
+/// by linear interpolation of φ between the two centres (the surface the interpolant of φ
+/// describes). Band field: every cell within `band` of the surface gets the distance to the
+/// nearest surface point among those its 26 neighbours hold, settled in increasing distance
+/// (closest-point propagation in Dijkstra's order, as the vector distance transforms of
+/// Danielsson 1980 [memory]; Euclidean to the point found, so no upwind error accumulates).
+/// Cells further away hold ±band. Exact for a plane; elsewhere within the first layer's O(h) error
+/// (tests/sim/liquid_distance_test.cpp).
+///
+/// Cells whose centre is inside a solid (their 8 nodal solid distances sum < 0, the solver's
+/// extendIntoSolids rule) are neither liquid nor air: they make no surface with their neighbours,
+/// distances pass through them, and they count as liquid in the sign.
+class SurfaceDistance {
+ public:
+  SurfaceDistance() = default;
+  /// @param phi                the solver's liquid field at cell centres [m]; only its sign and
+  ///                           its values at the cells next to the surface are read
+  /// @param solidNodeDistance  solid signed distance at the nodes [m]
+  /// @param band               [m], > 0: how far from the surface the grid field is computed
+  SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid, double band);
+
+  /// Signed distance at cell centres [m], exact to the surface points within band, ±band beyond.
+  const Array3f& field() const { return field_; }
+  double band() const { return band_; }
+  /// The surface points [m] (one per cell next to the surface).
+  const std::vector<Vec3>& surfacePoints() const { return points_; }
+
+  /// @brief Signed distance at any position [m]: the trilinear interpolant of field() where its 8
+  ///        centres lie inside the band, else ± the distance to the nearest surface point (sign
+  ///        of the interpolant). Without any surface point, ± the grid's diagonal.
+  double at(const Vec3& position) const;
+
+ private:
+  /// Distance [m] from p to the nearest surface point, by rings of buckets around p's bucket.
+  double nearestSurfacePoint(const Vec3& p) const;
+
+  GridGeometry grid_;
+  double band_ = 0.0;
+  Array3f field_;
+  std::vector<Vec3> points_;               ///< surface points, grouped by bucket
+  Index3 buckets_{0, 0, 0};                ///< bucket counts per axis
+  std::vector<std::size_t> bucketStart_;   ///< points of bucket b: [start[b], start[b + 1])
+};
+
+}  // namespace fluidsound::sim
