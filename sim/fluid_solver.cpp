@@ -95,6 +95,7 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
   work_->solidVelocity = solidFaceVelocity(grid_, scene.domain, scene.solids, 0.0);
   const int perCell = scene.solver.particlesPerCell;
   particles_ = seedLiquid(grid_, scene.liquid, work_->solidNodes, perCell, scene.seed);
+  assignParticleIds(particles_.id, nextParticleId_);
   // 0.8 × the mean particle spacing h/∛n: centres the Zhu–Bridson surface of a seeded layer on
   // the layer's top (measured in tests/sim/particle_transfer_test.cpp).
   constexpr double kRadiusOverSpacing = 0.8;
@@ -147,6 +148,7 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   limits.maximum = std::max(limits.maximum, 2 * limits.target);
   const ReseedingCount count = reseedParticles(particles_, after, liquidPhi_, w.solidNodes, velocity_, grid_, limits,
                                                scene_.seed, ++reseedPasses_);
+  assignParticleIds(particles_.id, nextParticleId_);
   stats.particlesReseeded += count.added;
   stats.particlesThinned += count.removed;
 }
@@ -172,12 +174,12 @@ double FluidSolver::stableTimeStep() const {
   return speed > 0.0 ? scene_.time.cfl * grid_.cellSize / speed : 1e300;
 }
 
-FrameStats FluidSolver::advanceTo(double until) {
+FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer) {
   FrameStats stats;
   while (time_ < until) {
     double dt = std::min(stableTimeStep(), until - time_);
     if (until - time_ - dt < kMinimumSubstepFraction * dt && until - time_ > dt) dt = 0.5 * (until - time_);
-    substep(dt, stats);
+    substep(dt, stats, observer);
     time_ = (until - time_ - dt <= 0.0) ? until : time_ + dt;
     ++stats.substeps;
   }
@@ -196,7 +198,7 @@ FrameStats FluidSolver::advanceTo(double until) {
   return stats;
 }
 
-double FluidSolver::substep(double dt, FrameStats& stats) {
+double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver& observer) {
   Workspace& w = *work_;
   if (w.solidsMove) {
     w.solidNodes = solidNodeDistance(grid_, scene_.domain, scene_.solids, time_ + dt);
@@ -207,6 +209,7 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
   for (std::size_t e = 0; e < scene_.emitters.size(); ++e)
     stats.particlesEmitted += emitParticles(particles_, scene_.emitters[e], w.emitters[e], time_, time_ + dt, grid_,
                                             scene_.solver.particlesPerCell, w.solidNodes, scene_.seed, e);
+  assignParticleIds(particles_.id, nextParticleId_);
   using Clock = std::chrono::steady_clock;
   auto mark = Clock::now();
   const auto lap = [&mark](double& total) {
@@ -259,6 +262,12 @@ double FluidSolver::substep(double dt, FrameStats& stats) {
   lap(seconds.gridToParticles);
   stats.particlesDeleted += advectParticles(particles_, velocity_, grid_, w.solidNodes, scene_.domain, dt);
   lap(seconds.advection);
+  if (observer) {
+    observer(LiquidState{particles_.position, particles_.velocity, particles_.id, liquidPhi_, velocity_, w.solidNodes,
+                         grid_},
+             time_, dt);
+    lap(seconds.bubbles);
+  }
   return dt;
 }
 

@@ -6,10 +6,12 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include "sim/array3.h"
 #include "sim/grid.h"
+#include "sim/liquid_state.h"
 #include "sim/mac_velocity.h"
 #include "sim/particles.h"
 #include "sim/scene.h"
@@ -37,11 +39,13 @@ struct FrameStats {
   struct StageSeconds {
     double transfer = 0.0, forces = 0.0, surface = 0.0, pressure = 0.0, gridToParticles = 0.0, advection = 0.0;
     double particleMaintenance = 0.0;  ///< once per frame: density correction and reseeding
-    /// The substeps' stages (all but particleMaintenance).
+    double bubbles = 0.0;              ///< the substep observer (the bubble model), if any
+    /// The substeps' solver stages (all but particleMaintenance and bubbles).
     double substepTotal() const { return transfer + forces + surface + pressure + gridToParticles + advection; }
     StageSeconds& operator+=(const StageSeconds& o) {
       transfer += o.transfer, forces += o.forces, surface += o.surface, pressure += o.pressure;
       gridToParticles += o.gridToParticles, advection += o.advection, particleMaintenance += o.particleMaintenance;
+      bubbles += o.bubbles;
       return *this;
     }
   } stageSeconds;
@@ -52,17 +56,22 @@ struct FluidProperties {
   double density = 998.0;  ///< ρ [kg/m³], water at 20 °C
 };
 
+/// Called at the end of every substep with the liquid after it (views, valid during the call),
+/// the substep's start time t [s] and length dt [s]: the bubble model's hook.
+using SubstepObserver = std::function<void(const LiquidState& liquid, double t, double dt)>;
+
 class FluidSolver {
  public:
   /// @brief Sets up the grid, solids and initial particles of a validated scene.
-  /// @throws std::invalid_argument for features not supported yet (meshes, emitters)
+  /// @throws std::invalid_argument for a mesh whose distance was not loaded (io::loadSceneMeshes)
   explicit FluidSolver(const Scene& scene, FluidProperties properties = {});
   ~FluidSolver();
   FluidSolver(const FluidSolver&) = delete;
   FluidSolver& operator=(const FluidSolver&) = delete;
 
-  /// @brief Advances to time `until` [s] in CFL-limited substeps.
-  FrameStats advanceTo(double until);
+  /// @brief Advances to time `until` [s] in CFL-limited substeps, calling `observer` (if any)
+  ///        after each, then corrects and reseeds the particles once (call once per frame).
+  FrameStats advanceTo(double until, const SubstepObserver& observer = {});
 
   double time() const { return time_; }
   const GridGeometry& grid() const { return grid_; }
@@ -76,7 +85,7 @@ class FluidSolver {
 
  private:
   struct Workspace;
-  double substep(double dt, FrameStats& stats);
+  double substep(double dt, FrameStats& stats, const SubstepObserver& observer);
   double stableTimeStep() const;
   /// The liquid distance at cell centres from the sorted particles.
   Array3f surfaceFromParticles(const struct CellIndex& index) const;
@@ -89,6 +98,7 @@ class FluidSolver {
   double time_ = 0.0;
   double particleRadius_ = 0.0;
   std::uint64_t reseedPasses_ = 0;
+  std::uint64_t nextParticleId_ = 0;  ///< the id the next new particle gets (particle_ids.h)
   Particles particles_;
   MacVelocity velocity_;
   Array3f liquidPhi_;

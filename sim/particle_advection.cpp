@@ -56,9 +56,7 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
   std::size_t kept = 0;
   for (std::size_t p = 0; p < particles.size(); ++p) {
     if (!keep[p]) continue;
-    particles.position[kept] = particles.position[p];
-    particles.velocity[kept] = particles.velocity[p];
-    particles.affine[kept] = particles.affine[p];
+    particles.move(p, kept);
     ++kept;
   }
   const std::size_t deleted = particles.size() - kept;

@@ -122,6 +122,7 @@ const CellIndex& sortParticlesByCell(Particles& particles, const GridGeometry& g
     sorted.position[q] = particles.position[p];
     sorted.velocity[q] = particles.velocity[p];
     sorted.affine[q] = particles.affine[p];
+    sorted.id[q] = particles.id[p];
   });
   std::swap(particles, sorted);  // the workspace keeps the old arrays for the next sort
   return workspace.index;

@@ -5,6 +5,8 @@
 // (docs/scene.md; every field is checked at parser level in scene_field_errors_test.cpp), plus the
 // missing, unreadable and misspelt scene and each way OUTDIR can be unusable.
 #include <gtest/gtest.h>
+
+#include "io/bubble_track_file.h"
 #include <unistd.h>
 
 #include <filesystem>
@@ -250,8 +252,10 @@ TEST(SimulateErrors, TinySceneSimulates) {
   const CommandOutcome result =
       runFluidsound({"simulate", scene.string(), "-o", outdir.string(), "--quiet"});
   EXPECT_EQ(result.exitCode, 0) << result.err;
-  for (const char* name : {"frames/0000.vdb", "frames/0003.vdb", "report.json"})
+  for (const char* name : {"frames/0000.vdb", "frames/0003.vdb", "report.json", "bubbles.json"})
     EXPECT_TRUE(fs::is_regular_file(outdir / name)) << name;
+  // The bubble tracks are a valid fluidsound.bubbles/1 file (transfer comes later).
+  EXPECT_NO_THROW(readBubbleTracks(outdir / "bubbles.json", TransferValues::Optional));
 }
 
 }  // namespace
