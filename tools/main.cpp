@@ -11,6 +11,7 @@
 #include "tools/simulate_command.h"
 #include "tools/spectrogram_command.h"
 #include "tools/synth_command.h"
+#include "tools/transfer_command.h"
 #include "tools/validate_command.h"
 
 using namespace fluidsound::tools;
@@ -37,10 +38,12 @@ int main(int argc, char** argv) {
   SpectrogramOptions spectrogram;
   ValidateOptions validate;
   SimulateOptions simulate;
+  TransferOptions transfer;
   CLI::App* synthCommand = addSynthCommand(app, synth);
   CLI::App* spectrogramCommand = addSpectrogramCommand(app, spectrogram);
   CLI::App* validateCommand = addValidateCommand(app, validate);
   CLI::App* simulateCommand = addSimulateCommand(app, simulate);
+  CLI::App* transferCommand = addTransferCommand(app, transfer);
 
   try {
     app.parse(argc, argv);
@@ -62,6 +65,8 @@ int main(int argc, char** argv) {
       return runWithThreads(validate.common.threads, [&] { return runValidateCommand(validate); });
     if (simulateCommand->parsed())
       return runWithThreads(simulate.common.threads, [&] { return runSimulateCommand(simulate); });
+    if (transferCommand->parsed())
+      return runWithThreads(transfer.common.threads, [&] { return runTransferCommand(transfer); });
   } catch (const fluidsound::io::InputError& e) {
     std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
     return kExitBadInput;

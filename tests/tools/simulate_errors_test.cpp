@@ -254,8 +254,13 @@ TEST(SimulateErrors, TinySceneSimulates) {
   EXPECT_EQ(result.exitCode, 0) << result.err;
   for (const char* name : {"frames/0000.vdb", "frames/0003.vdb", "report.json", "bubbles.json"})
     EXPECT_TRUE(fs::is_regular_file(outdir / name)) << name;
-  // The bubble tracks are a valid fluidsound.bubbles/1 file (transfer comes later).
+  // The bubble tracks are a valid fluidsound.bubbles/1 file (transfer comes later)…
   EXPECT_NO_THROW(readBubbleTracks(outdir / "bubbles.json", TransferValues::Optional));
+  // …which `transfer` fills from the frames alone: one value per listener in every sample.
+  const CommandOutcome transfer = runFluidsound({"transfer", scene.string(), "-o", outdir.string(), "--quiet"});
+  EXPECT_EQ(transfer.exitCode, 0) << transfer.err;
+  EXPECT_NO_THROW(readBubbleTracks(outdir / "bubbles.json", TransferValues::Required));
+  EXPECT_TRUE(fs::is_regular_file(outdir / "transfer.report.json"));
 }
 
 }  // namespace

@@ -1,0 +1,35 @@
+// io/frame_surface.h — reading back a frame's liquid surface (frames/NNNN.vdb, grid `surface`)
+// for the transfer stage: the free surface above a bubble as a local plane (point, normal, depth).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+
+#include "acoustics/image_source_transfer.h"
+
+namespace fluidsound::io {
+
+/// One frame's `surface` level set, loaded for queries (OpenVDB kept out of this header).
+class FrameSurface {
+ public:
+  /// @throws InputError if the file is missing, unreadable or has no FloatGrid named `surface`
+  explicit FrameSurface(const std::filesystem::path& path);
+  ~FrameSurface();
+  FrameSurface(FrameSurface&&) noexcept;
+  FrameSurface& operator=(FrameSurface&&) noexcept;
+
+  /// @brief The free surface above a bubble as a plane: from the point `depth` above the centre
+  ///        along `up` (the direction against gravity), the level set's gradient there gives the
+  ///        normal n and one Newton step onto φ = 0 the surface point q; the depth is (q − centre)·n.
+  ///        Where that point is outside the narrow band, the gradient is too weak (|∇φ| < ½) or
+  ///        the projected depth is not positive, the plane is the horizontal one at the track's
+  ///        depth (normal `up`).
+  /// @param centre  bubble centre [m]; `depth` [m] > 0 from the track; `up` a unit vector
+  acoustics::LocalSurface surfaceAbove(const acoustics::Vec3& centre, double depth, const acoustics::Vec3& up) const;
+
+ private:
+  struct Grid;
+  std::unique_ptr<Grid> grid_;
+};
+
+}  // namespace fluidsound::io

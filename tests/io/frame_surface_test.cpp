@@ -1,0 +1,69 @@
+// Tests of io/frame_surface.h: the free surface above a bubble, read back from a frame file.
+#include "io/frame_surface.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "io/frame_files.h"
+#include "io/input_error.h"
+#include "sim/fluid_solver.h"
+#include "support/temp_folder.h"
+
+namespace fluidsound::io {
+namespace {
+
+constexpr double kCell = 0.01;  // [m]
+
+/// frames/0000.vdb of a resting layer 4 cm deep in a 10 cm closed box, 1 cm cells.
+std::filesystem::path layerFrame(const test::TempFolder& folder) {
+  sim::Scene s;
+  s.domain.max = {0.1, 0.1, 0.1};
+  s.domain.cell = kCell;
+  s.time.duration = 1.0;
+  s.liquid.push_back({sim::Box{{0, 0, 0}, {0.1, 0.04, 0.1}}, {}});
+  const sim::FluidSolver solver(s);
+  const auto path = folder.path() / "0000.vdb";
+  writeFrameVdb(path, solver.grid(), solver.particles(), solver.velocity(), {solver.particleRadius()});
+  return path;
+}
+
+// Claim: under a flat surface the local plane is that surface: normal up (the level set's
+// gradient), the bubble's depth that of the surface above it, and the plane passes at that depth
+// above the centre (as the image-source model requires). Reference: the layer's top, y = 4 cm.
+// Tolerance: 0.15 h on the depth (the frame's surface, rasterised from the particles at 2r, eroded
+// by r and smoothed once, sits 0.105 h below the layer's top: measured), 0.05 on the normal's
+// components.
+TEST(FrameSurface, FlatLayerGivesAnUpwardPlaneAtTheSurface) {
+  test::TempFolder folder;
+  const FrameSurface surface(layerFrame(folder));
+  for (const double y : {0.015, 0.025, 0.034}) {
+    const acoustics::Vec3 centre{0.05, y, 0.05};
+    // The track's depth may be off (the simulation's surface differs a little): start 2 mm wrong.
+    const acoustics::LocalSurface s = surface.surfaceAbove(centre, 0.04 - y + 0.002, {0.0, 1.0, 0.0});
+    EXPECT_NEAR(s.normal[1], 1.0, 0.05);
+    EXPECT_NEAR(s.normal[0], 0.0, 0.05);
+    EXPECT_NEAR(s.depth, 0.04 - y, 0.15 * kCell) << "y = " << y;
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(s.point[a], centre[a] + s.depth * s.normal[a], 1e-12);
+  }
+}
+
+// Claim: where the point above the bubble is beyond the narrow band, the plane is the horizontal
+// one at the track's depth (no gradient to read). Reference: the inputs. Tolerance: exact.
+TEST(FrameSurface, BeyondTheBandFallsBackToTheHorizontalPlane) {
+  test::TempFolder folder;
+  const FrameSurface surface(layerFrame(folder));
+  const acoustics::LocalSurface s = surface.surfaceAbove({0.05, 0.01, 0.05}, 0.08, {0.0, 1.0, 0.0});
+  EXPECT_EQ(s.normal, (acoustics::Vec3{0.0, 1.0, 0.0}));
+  EXPECT_DOUBLE_EQ(s.depth, 0.08);
+  EXPECT_DOUBLE_EQ(s.point[1], 0.09);
+}
+
+// Bad input: a missing frame file is an InputError naming it.
+TEST(FrameSurface, MissingFrameNamesTheFile) {
+  test::TempFolder folder;
+  EXPECT_THROW(FrameSurface(folder.path() / "0007.vdb"), InputError);
+}
+
+}  // namespace
+}  // namespace fluidsound::io
