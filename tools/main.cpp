@@ -7,6 +7,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "io/input_error.h"
+#include "tools/run_command.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
 #include "tools/spectrogram_command.h"
@@ -39,11 +40,13 @@ int main(int argc, char** argv) {
   ValidateOptions validate;
   SimulateOptions simulate;
   TransferOptions transfer;
+  RunOptions run;
   CLI::App* synthCommand = addSynthCommand(app, synth);
   CLI::App* spectrogramCommand = addSpectrogramCommand(app, spectrogram);
   CLI::App* validateCommand = addValidateCommand(app, validate);
   CLI::App* simulateCommand = addSimulateCommand(app, simulate);
   CLI::App* transferCommand = addTransferCommand(app, transfer);
+  CLI::App* runCommand = addRunCommand(app, run);
 
   try {
     app.parse(argc, argv);
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
       return runWithThreads(validate.common.threads, [&] { return runValidateCommand(validate); });
     if (simulateCommand->parsed())
       return runWithThreads(simulate.common.threads, [&] { return runSimulateCommand(simulate); });
+    if (runCommand->parsed()) return runWithThreads(run.common.threads, [&] { return runRunCommand(run); });
     if (transferCommand->parsed())
       return runWithThreads(transfer.common.threads, [&] { return runTransferCommand(transfer); });
   } catch (const fluidsound::io::InputError& e) {

@@ -1,0 +1,175 @@
+// tools/run_command.cpp — see run_command.h.
+#include "tools/run_command.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <variant>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "io/bubble_track_file.h"
+#include "io/input_error.h"
+#include "io/scene_file.h"
+#include "io/text_file.h"
+#include "tools/run_report.h"
+#include "tools/simulate_command.h"
+#include "tools/synth_command.h"
+#include "tools/transfer_command.h"
+
+namespace fluidsound::tools {
+
+CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
+  CLI::App* c = app.add_subcommand(
+      "run", "the whole pipeline: simulate -> transfer -> synth, to NAME.wav, spectrogram.png and report.json");
+  c->add_option("scene", o.scene, "scene file (fluidsound.scene/1)")->required();
+  c->add_option("-o,--output", o.output, "output folder")->required();
+  c->add_flag("--fresh", o.fresh, "run every stage again, even if its artefacts are up to date");
+  addCommonOptions(*c, o.common);
+  return c;
+}
+
+namespace {
+using Json = nlohmann::ordered_json;
+
+/// FNV-1a 64 over bytes, continuing from `hash`.
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash = 0xcbf29ce484222325ull) {
+  for (const unsigned char c : bytes) hash = (hash ^ c) * 0x100000001b3ull;
+  return hash;
+}
+
+std::string fileBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// The inputs' fingerprint: the scene file, every mesh it names and the program's version.
+std::string inputHash(const sim::Scene& scene) {
+  std::uint64_t h = fnv1a(fileBytes(scene.file));
+  const auto addMesh = [&h](const sim::Shape& shape) {
+    if (const auto* mesh = std::get_if<sim::MeshFile>(&shape)) h = fnv1a(fileBytes(mesh->file), h);
+  };
+  for (const sim::LiquidRegion& r : scene.liquid) addMesh(r.shape);
+  for (const sim::Solid& s : scene.solids) addMesh(s.shape);
+  h = fnv1a(versionText(), h);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+/// OUTDIR/stages.json: the input hash each stage last completed with.
+Json readStages(const std::filesystem::path& path) {
+  if (!std::filesystem::is_regular_file(path)) return Json::object();
+  const Json stages = Json::parse(fileBytes(path), nullptr, false);
+  return stages.is_object() ? stages : Json::object();
+}
+
+/// The name of the audio file: the scene file's name without `.json` and `.scene`.
+std::string audioName(const std::filesystem::path& scene) {
+  std::string stem = scene.stem().string();
+  if (stem.size() > 6 && stem.ends_with(".scene")) stem.resize(stem.size() - 6);
+  return stem + ".wav";
+}
+
+/// Bubble counts by radius, 10 log-spaced bins from 0.1 to 10 mm (radii outside go to the ends).
+Json radiusHistogram(const acoustics::BubbleTrackSet& tracks) {
+  constexpr int kBins = 10;
+  constexpr double kLow = 1e-4, kDecades = 2.0;
+  std::vector<int> counts(kBins, 0);
+  for (const acoustics::BubbleTrack& b : tracks.bubbles) {
+    const int bin = static_cast<int>(std::floor(std::log10(b.radius / kLow) / kDecades * kBins));
+    ++counts[std::clamp(bin, 0, kBins - 1)];
+  }
+  Json bins = Json::array();
+  for (int i = 0; i < kBins; ++i)
+    bins.push_back({{"radius_from_m", kLow * std::pow(10.0, kDecades * i / kBins)},
+                    {"radius_to_m", kLow * std::pow(10.0, kDecades * (i + 1) / kBins)},
+                    {"bubbles", counts[i]}});
+  return bins;
+}
+}  // namespace
+
+int runRunCommand(const RunOptions& o) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const sim::Scene scene = io::readScene(o.scene);  // bad input stops here, before any output
+  const std::string hash = inputHash(scene);
+  const std::filesystem::path out = o.output, stagesPath = out / "stages.json";
+  Json stages = o.fresh ? Json::object() : readStages(stagesPath);
+  Json stageReport = Json::object();
+  bool upstreamRan = false;
+  // Runs `stage` unless its artefacts are up to date (same inputs, no earlier stage ran again),
+  // then records its completion, so that an interrupted run resumes at the first unfinished stage.
+  const auto runStage = [&](const char* name, const auto& body, std::initializer_list<std::string> artefacts) {
+    bool present = true;
+    for (const std::string& a : artefacts) present = present && std::filesystem::exists(out / a);
+    const bool reuse = !upstreamRan && present && stages.value(name, "") == hash;
+    const auto t0 = Clock::now();
+    if (!reuse) {
+      if (!o.common.quiet) std::fprintf(stderr, "run: %s\n", name);
+      body();
+      stages[name] = hash;
+      std::filesystem::create_directories(out);
+      io::writeTextFile(stagesPath, stages.dump(2) + "\n");
+      upstreamRan = true;
+    } else if (!o.common.quiet) {
+      std::fprintf(stderr, "run: %s — up to date, reused\n", name);
+    }
+    stageReport[name] = {{"reused", reuse}, {"seconds", std::chrono::duration<double>(Clock::now() - t0).count()}};
+  };
+
+  SimulateOptions simulate;
+  simulate.common = o.common;
+  simulate.scene = o.scene;
+  simulate.output = o.output;
+  runStage("simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"});
+  // simulate's report.json is the base of the run's report; read it before later stages change
+  // anything (a reused simulation keeps its own).
+  Json report = Json::parse(fileBytes(out / "report.json"), nullptr, false);
+  if (!report.is_object()) report = Json::object();
+
+  TransferOptions transfer;
+  transfer.common = o.common;
+  transfer.scene = o.scene;
+  transfer.output = o.output;
+  runStage("transfer", [&] { runTransferCommand(transfer); }, {"transfer.report.json"});
+
+  SynthOptions synth;
+  synth.common = o.common;
+  synth.input = (out / "bubbles.json").string();
+  synth.output = (out / audioName(scene.file)).string();
+  synth.spectrogram = (out / "spectrogram.png").string();
+  synth.report = (out / "synth.report.json").string();
+  runStage("synth", [&] { runSynthCommand(synth); }, {audioName(scene.file), "spectrogram.png", "synth.report.json"});
+
+  const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
+  const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);
+  Json run = {{"scene", o.scene},
+              {"input_hash", hash},
+              {"stages", stageReport},
+              {"bubbles", tracks.bubbles.size()},
+              {"radius_histogram", radiusHistogram(tracks)},
+              {"audio", audioName(scene.file)},
+              {"spectrogram", "spectrogram.png"},
+              {"seconds", std::chrono::duration<double>(Clock::now() - start).count()}};
+  if (synthReport.is_object() && synthReport.contains("results")) {
+    const Json& r = synthReport["results"];
+    if (r.contains("peak_pascals")) run["peak_pascals"] = r["peak_pascals"];
+    if (r.contains("output_peak_dbfs")) run["peak_dbfs"] = r["output_peak_dbfs"];
+  }
+  report["run"] = run;
+  io::writeTextFile(out / "report.json", report.dump(2) + "\n");
+  if (!o.common.quiet)
+    std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
+                 (out / audioName(scene.file)).string().c_str(), run["seconds"].get<double>());
+  return kExitSuccess;
+}
+
+}  // namespace fluidsound::tools

@@ -1,0 +1,22 @@
+// tools/run_command.h — `fluidsound run SCENE.json -o OUTDIR`: the whole pipeline, simulate →
+// transfer → synth, to OUTDIR/NAME.wav, OUTDIR/spectrogram.png and OUTDIR/report.json, reusing the
+// artefacts of every stage whose inputs have not changed (so an interrupted run resumes).
+#pragma once
+
+#include <string>
+
+#include "tools/command_options.h"
+
+namespace fluidsound::tools {
+
+struct RunOptions {
+  CommonOptions common;
+  std::string scene;
+  std::string output;
+  bool fresh = false;  ///< run every stage even if its artefacts are up to date
+};
+
+CLI::App* addRunCommand(CLI::App& app, RunOptions& options);
+int runRunCommand(const RunOptions& options);
+
+}  // namespace fluidsound::tools
