@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "io/json_validation.h"
+#include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
 
 namespace fluidsound::io {
@@ -72,7 +73,7 @@ class SceneReader {
     check_.requireFormat(root, kFormatTag);
     check_.rejectUnknownKeys(root, "",
                              {"format", "domain", "gravity", "time", "seed", "liquid", "emitters",
-                              "solids", "listeners", "audio", "solver"});
+                              "solids", "listeners", "audio", "solver", "bubbles"});
 
     sim::Scene scene;
     scene.domain =
@@ -114,6 +115,9 @@ class SceneReader {
     if (const json* solver =
             check_.optionalObject(root, "", "solver", "an object of solver settings"))
       scene.solver = solverSettings(*solver);
+    if (const json* bubbles =
+            check_.optionalObject(root, "", "bubbles", "an object of bubble-model settings (docs/bubbles.md)"))
+      scene.bubbles = readBubbleSettings(check_, *bubbles);
     return scene;
   }
 

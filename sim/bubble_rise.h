@@ -49,6 +49,7 @@ struct BubbleRiseSettings {
   /// [memory]).
   double addedMassCoefficient = 0.5;
   BubbleSurface surface = BubbleSurface::Contaminated;
+  bool operator==(const BubbleRiseSettings&) const = default;
 };
 
 /// The liquid at the bubble's position, sampled by the caller from the fluid solver.

@@ -72,6 +72,8 @@ struct BubbleSettings {
   /// Buoyant rise and drag (Tomiyama et al. 1998, contaminated water by default; bubble_rise.h).
   BubbleRiseSettings rise;
 
+  bool operator==(const BubbleSettings&) const = default;
+
   /// The smallest and largest radius the distribution draws [m].
   double minRadius() const;
   double maxRadius() const;

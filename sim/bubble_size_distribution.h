@@ -18,6 +18,7 @@ struct PowerLawBubbleSizes {
   double hinzeRadius = 1.0e-3;  ///< a_H [m], > 0 (physics.md §7.2 default: 1 mm)
   double smallExponent = 1.5;   ///< N ∝ a^(−smallExponent) for a < a_H (Deane & Stokes: 3/2)
   double largeExponent = 10.0 / 3.0;  ///< N ∝ a^(−largeExponent) for a > a_H (Deane & Stokes: 10/3)
+  bool operator==(const PowerLawBubbleSizes&) const = default;
 };
 
 /// @brief A normal distribution of radii truncated to [minRadius, maxRadius], the selectable
@@ -28,6 +29,7 @@ struct GaussianBubbleSizes {
   double radiusDeviation = 0.0;  ///< σ [m], > 0
   double minRadius = 1.0e-4;     ///< [m], > 0 (physics.md §7.2: 0.1 mm)
   double maxRadius = 5.0e-3;     ///< [m], > minRadius (physics.md §7.2: 5 mm)
+  bool operator==(const GaussianBubbleSizes&) const = default;
 };
 
 /// The closed set of size distributions.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sim/array3.h"
+#include "sim/bubble_settings.h"
 #include "sim/grid.h"
 
 namespace fluidsound::sim {
@@ -136,6 +137,7 @@ struct Scene {
   std::vector<Listener> listeners;  ///< default: one listener 0.5 m above the domain centre
   double sampleRate = 48000.0;      ///< [Hz], the "audio" block
   SolverSettings solver;
+  BubbleSettings bubbles;           ///< the "bubbles" block (docs/bubbles.md); defaults if absent
   bool operator==(const Scene&) const = default;
 
   /// The grid of the domain: cells = round((max − min)/cell) per axis.

@@ -82,9 +82,9 @@ int runSimulateCommand(const SimulateOptions& o) {
   io::requireWritableFolder(frames / "0000.vdb");
 
   sim::FluidSolver solver(scene);
-  // The bubble model runs inside the loop on the in-memory state (DESIGN.md); default settings
-  // until scenes carry a `bubbles` block (docs/bubbles.md).
-  sim::BubbleModel bubbles(sim::BubbleSettings{}, scene.seed, scene.gravity);
+  // The bubble model runs inside the loop on the in-memory state (DESIGN.md), with the scene's
+  // `bubbles` block (docs/bubbles.md).
+  sim::BubbleModel bubbles(scene.bubbles, scene.seed, scene.gravity);
   const sim::SubstepObserver stepBubbles = [&bubbles](const sim::LiquidState& liquid, double t, double dt) {
     bubbles.step(liquid, t, dt);
   };

@@ -1,0 +1,92 @@
+// io/scene_bubbles.cpp — see scene_bubbles.h.
+#include "io/scene_bubbles.h"
+
+#include <limits>
+#include <string>
+
+#include "io/input_error.h"
+
+namespace fluidsound::io {
+namespace {
+using json = nlohmann::json;
+
+/// min_radius < max_radius, named at the max.
+void requireRadiusOrder(const JsonValidator& check, const std::string& path, double min, double max) {
+  if (!(max > min))
+    check.fail(memberPath(path, "max_radius"), "a radius > min_radius = " + std::to_string(min) + " (metres)",
+               std::to_string(max));
+}
+
+sim::BubbleSizeDistribution readSizes(const JsonValidator& check, const json& object, const std::string& path) {
+  check.rejectUnknownKeys(object, path, {"power_law", "gaussian"});
+  const json* power = findMember(object, "power_law");
+  const json* gaussian = findMember(object, "gaussian");
+  if ((power == nullptr) == (gaussian == nullptr))
+    check.fail(path, "exactly one distribution: power_law or gaussian",
+               power == nullptr ? "none of them" : "both");
+  if (power != nullptr) {
+    const std::string p = memberPath(path, "power_law");
+    check.requireObject(*power, p, "an object with min_radius, max_radius, hinze_radius (metres)");
+    check.rejectUnknownKeys(*power, p, {"min_radius", "max_radius", "hinze_radius"});
+    sim::PowerLawBubbleSizes s;
+    s.minRadius = check.optionalNumber(*power, p, "min_radius", s.minRadius, "a number > 0 (metres)", positive);
+    s.maxRadius = check.optionalNumber(*power, p, "max_radius", s.maxRadius, "a number > 0 (metres)", positive);
+    s.hinzeRadius = check.optionalNumber(*power, p, "hinze_radius", s.hinzeRadius, "a number > 0 (metres)", positive);
+    requireRadiusOrder(check, p, s.minRadius, s.maxRadius);
+    return s;
+  }
+  const std::string p = memberPath(path, "gaussian");
+  check.requireObject(*gaussian, p, "an object with mean_radius and radius_deviation (metres)");
+  check.rejectUnknownKeys(*gaussian, p, {"mean_radius", "radius_deviation", "min_radius", "max_radius"});
+  sim::GaussianBubbleSizes s;
+  s.meanRadius = check.requiredNumber(*gaussian, p, "mean_radius", "a number > 0 (metres)", positive);
+  s.radiusDeviation = check.requiredNumber(*gaussian, p, "radius_deviation", "a number > 0 (metres)", positive);
+  s.minRadius = check.optionalNumber(*gaussian, p, "min_radius", s.minRadius, "a number > 0 (metres)", positive);
+  s.maxRadius = check.optionalNumber(*gaussian, p, "max_radius", s.maxRadius, "a number > 0 (metres)", positive);
+  requireRadiusOrder(check, p, s.minRadius, s.maxRadius);
+  return s;
+}
+}  // namespace
+
+sim::BubbleSettings readBubbleSettings(const JsonValidator& check, const json& object) {
+  const std::string path = "bubbles";
+  check.rejectUnknownKeys(object, path,
+                          {"band_cells", "entrainment_depth_cells", "entrainment_window", "entrainment_speed",
+                           "probe_cells", "seed_lifetime", "potential_decay_time", "rate", "sizes", "jitter_cells",
+                           "min_seeds", "neighbourhood_cells", "neighbourhood_radii"});
+  sim::BubbleSettings s;
+  const auto cells = [&](std::string_view key, double fallback) {
+    return check.optionalNumber(object, path, key, fallback, "a number > 0 (cells)", positive);
+  };
+  s.bandCells = cells("band_cells", s.bandCells);
+  s.entrainmentDepthCells = cells("entrainment_depth_cells", s.entrainmentDepthCells);
+  s.probeCells = cells("probe_cells", s.probeCells);
+  s.entrainmentWindow =
+      check.optionalNumber(object, path, "entrainment_window", s.entrainmentWindow, "a number > 0 (seconds)", positive);
+  s.entrainmentSpeed =
+      check.optionalNumber(object, path, "entrainment_speed", s.entrainmentSpeed, "a number > 0 (m/s)", positive);
+  s.seedLifetime =
+      check.optionalNumber(object, path, "seed_lifetime", s.seedLifetime, "a number > 0 (seconds)", positive);
+  s.potentialDecayTime = check.optionalNumber(object, path, "potential_decay_time", s.potentialDecayTime,
+                                              "a number > 0 (seconds)", positive);
+  s.rate = check.optionalNumber(object, path, "rate", s.rate, "a number >= 0 (creation attempts per second per unit potential)",
+                                nonNegative);
+  s.jitterCells = check.optionalNumber(object, path, "jitter_cells", s.jitterCells, "a number >= 0 (cells)", nonNegative);
+  if (const json* minSeeds = findMember(object, "min_seeds"))
+    s.minSeeds = static_cast<int>(check.wholeNumber(*minSeeds, memberPath(path, "min_seeds"), "an integer from 1 to 1000", 1, 1000));
+  s.neighbourhoodCells = check.optionalNumber(object, path, "neighbourhood_cells", s.neighbourhoodCells,
+                                              "a number >= 0 (cells)", nonNegative);
+  s.neighbourhoodRadii = check.optionalNumber(object, path, "neighbourhood_radii", s.neighbourhoodRadii,
+                                              "a number >= 0 (bubble radii)", nonNegative);
+  if (const json* sizes = check.optionalObject(object, path, "sizes", "an object: power_law or gaussian"))
+    s.sizes = readSizes(check, *sizes, memberPath(path, "sizes"));
+  // Whatever the field checks above let through, the model's own check is the last word.
+  try {
+    sim::validateBubbleSettings(s);
+  } catch (const std::invalid_argument& e) {
+    check.fail(path, "bubble settings the model accepts", e.what());
+  }
+  return s;
+}
+
+}  // namespace fluidsound::io
