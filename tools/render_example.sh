@@ -1,14 +1,24 @@
 #!/usr/bin/env bash
-# Quick start 1: installs what is missing, builds, and renders the default example (a pour of
-# ~400 bubbles, scenes/pour.bubbles.json) to out/pour.wav, out/pour.png and out/pour.report.json.
-#   usage: tools/render_example.sh [BUBBLES.json] [OUTDIR]
+# Quick start 1: installs what is missing, builds, and renders the default example — water poured
+# from a nozzle into a pool, scenes/pour_tank.scene.json — through the whole pipeline (simulate →
+# transfer → synth) to out/pour_tank/pour_tank.wav, spectrogram.png and report.json.
+#   usage: tools/render_example.sh [SCENE.json | BUBBLES.json] [OUTDIR]
+# A bubble-track file (*.bubbles.json, e.g. scenes/pour.bubbles.json) is rendered by synth alone.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$here/tools/setup.sh"
-input=${1:-"$here/scenes/pour.bubbles.json"}
-outdir=${2:-"$here/out"}
-mkdir -p "$outdir"
+input=${1:-"$here/scenes/pour_tank.scene.json"}
 name=$(basename "$input" .json)
-name=${name%.bubbles}
-"$here/build/tools/fluidsound" synth "$input" -o "$outdir/$name.wav" --spectrogram "$outdir/$name.png"
-echo "listen: $outdir/$name.wav   look: $outdir/$name.png   report: $outdir/$name.report.json"
+fluidsound="$here/build/tools/fluidsound"
+if [[ "$name" == *.bubbles ]]; then
+  name=${name%.bubbles}
+  outdir=${2:-"$here/out"}
+  mkdir -p "$outdir"
+  "$fluidsound" synth "$input" -o "$outdir/$name.wav" --spectrogram "$outdir/$name.png"
+  echo "listen: $outdir/$name.wav   look: $outdir/$name.png   report: $outdir/$name.report.json"
+else
+  name=${name%.scene}
+  outdir=${2:-"$here/out/$name"}
+  "$fluidsound" run "$input" -o "$outdir"
+  echo "listen: $outdir/$name.wav   look: $outdir/spectrogram.png   report: $outdir/report.json"
+fi
