@@ -14,6 +14,7 @@
 
 #include "sim/mesh_closedness.h"
 #include "sim/solid_geometry.h"
+#include "support/reference_distances.h"
 #include "support/test_meshes.h"
 
 namespace fluidsound::io {
@@ -31,19 +32,7 @@ constexpr double kFloatToleranceCells = 1e-5;
 /// A 0.5 m cube of 50 cells of 1 cm, origin at 0.
 sim::GridGeometry testGrid() { return sim::GridGeometry{{50, 50, 50}, 0.01, {0.0, 0.0, 0.0}}; }
 
-/// Signed distance to the axis-aligned box [lo, hi] (closed form: outside, the distance to the
-/// clamped point; inside, minus the distance to the nearest face).
-double boxDistance(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-  double outside = 0.0, inside = std::numeric_limits<double>::infinity();
-  bool isInside = true;
-  for (int a = 0; a < 3; ++a) {
-    const double q = std::clamp(p[a], lo[a], hi[a]);
-    outside += (p[a] - q) * (p[a] - q);
-    isInside = isInside && p[a] > lo[a] && p[a] < hi[a];
-    inside = std::min({inside, p[a] - lo[a], hi[a] - p[a]});
-  }
-  return isInside ? -inside : std::sqrt(outside);
-}
+double boxDistance(const Vec3& p, const Vec3& lo, const Vec3& hi) { return test::referenceBoxDistance(p, lo, hi); }
 
 /// Where the nodal values are exact [cells]: OpenVDB computes the distance to a triangle at
 /// every voxel one step (of 26) from a voxel that the triangle passes within √3/2 of. For a

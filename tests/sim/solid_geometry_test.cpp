@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "support/reference_distances.h"
+
 namespace fluidsound::sim {
 namespace {
 
@@ -37,20 +39,7 @@ Domain openDomain() {
   return d;
 }
 
-/// Reference signed distance of an axis-aligned box, written independently of the solver's
-/// local-frame formula: outside, the distance to the nearest point of the box (clamp); inside,
-/// minus the distance to the nearest face.
-double axisBoxDistance(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-  double outside = 0.0, inside = std::numeric_limits<double>::infinity();
-  bool isInside = true;
-  for (int a = 0; a < 3; ++a) {
-    const double q = std::clamp(p[a], lo[a], hi[a]);
-    outside += (p[a] - q) * (p[a] - q);
-    isInside = isInside && p[a] > lo[a] && p[a] < hi[a];
-    inside = std::min({inside, p[a] - lo[a], hi[a] - p[a]});
-  }
-  return isInside ? -inside : std::sqrt(outside);
-}
+double axisBoxDistance(const Vec3& p, const Vec3& lo, const Vec3& hi) { return test::referenceBoxDistance(p, lo, hi); }
 
 TEST(SolidGeometry, ScaledTranslatedBoxDistanceIsExact) {
   // Claim: a unit box scaled by 0.25 about the origin and translated by 0.3 m is the box
