@@ -10,6 +10,16 @@
 namespace fluidsound::sim {
 namespace {
 
+/// A closed box [0, domainMax] of 1 cm cells holding liquid in [0, liquidMax], for `duration` s.
+Scene liquidInABox(const Vec3& domainMax, const Vec3& liquidMax, double duration) {
+  Scene scene;
+  scene.domain.max = domainMax;
+  scene.domain.cell = 0.01;
+  scene.time.duration = duration;
+  scene.liquid.push_back({Box{{0, 0, 0}, liquidMax}, {}});
+  return scene;
+}
+
 /// Advances `scene` frame by frame at 30 fps for `seconds` with the bubble model attached.
 std::size_t bubblesMade(const Scene& scene, double seconds) {
   FluidSolver solver(scene);
@@ -26,24 +36,14 @@ std::size_t bubblesMade(const Scene& scene, double seconds) {
 // (≤ 3 cm/s, docs/solver.md) stay far below the entrainment speed (1 m/s) and the surface moves
 // by less than the depth-growth threshold (2 cells). Reference: none may form. Tolerance: exact.
 TEST(FluidBubbles, StillTankMakesNoBubble) {
-  Scene scene;
-  scene.domain.max = {0.16, 0.16, 0.16};
-  scene.domain.cell = 0.01;
-  scene.time.duration = 2.0;
-  scene.liquid.push_back({Box{{0, 0, 0}, {0.16, 0.0735, 0.16}}, {}});
-  EXPECT_EQ(bubblesMade(scene, 2.0), 0u);
+  EXPECT_EQ(bubblesMade(liquidInABox({0.16, 0.16, 0.16}, {0.16, 0.0735, 0.16}, 2.0), 2.0), 0u);
 }
 
 // Claim (issue 6): a dam break makes bubbles once the surge hits the far wall and plunges back
 // (the measured 3-D run of scenes/dam_break.scene.json makes ~1300 in 3 s). Reference: more than
 // none within 1 s in a 5-cell-thick version. Tolerance: at least 10.
 TEST(FluidBubbles, DamBreakMakesBubbles) {
-  Scene scene;
-  scene.domain.max = {0.5, 0.3, 0.05};
-  scene.domain.cell = 0.01;
-  scene.time.duration = 1.0;
-  scene.liquid.push_back({Box{{0, 0, 0}, {0.1, 0.2, 0.05}}, {}});
-  EXPECT_GE(bubblesMade(scene, 1.0), 10u);
+  EXPECT_GE(bubblesMade(liquidInABox({0.5, 0.3, 0.05}, {0.1, 0.2, 0.05}, 1.0), 1.0), 10u);
 }
 
 // Claim (issue 6): a pour makes more bubbles the faster it flows. A r = 8 mm nozzle 12 cm above a
@@ -54,11 +54,7 @@ TEST(FluidBubbles, DamBreakMakesBubbles) {
 TEST(FluidBubbles, PourMakesMoreBubblesAtHigherFlow) {
   std::size_t previous = 0;
   for (const double speed : {1.0, 2.0, 3.0}) {
-    Scene scene;
-    scene.domain.max = {0.2, 0.2, 0.2};
-    scene.domain.cell = 0.01;
-    scene.time.duration = 1.0;
-    scene.liquid.push_back({Box{{0, 0, 0}, {0.2, 0.06, 0.2}}, {}});
+    Scene scene = liquidInABox({0.2, 0.2, 0.2}, {0.2, 0.06, 0.2}, 1.0);
     Emitter nozzle;
     nozzle.center = {0.1, 0.18, 0.1};
     nozzle.normal = {0.0, -1.0, 0.0};
