@@ -1,6 +1,7 @@
 # Every third-party package fluidsound builds against; all are Debian 12 packages installed by
 # tools/setup.sh. Imported targets are SYSTEM includes, so -Wall -Wextra stays about our code.
 find_package(TBB 2021 CONFIG REQUIRED)                 # parallel loops
+find_package(embree 3 CONFIG REQUIRED)                 # ray queries against thin mesh walls
 find_package(Eigen3 3.4 CONFIG REQUIRED)               # linear algebra, FFT (unsupported/Eigen/FFT)
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)       # scene and bubble-track files
 find_package(tinyobjloader CONFIG REQUIRED)            # OBJ meshes (version "2rc10": no version test)

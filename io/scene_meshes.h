@@ -9,7 +9,8 @@ namespace fluidsound::io {
 /// @brief For every mesh liquid region and mesh solid of `scene`: reads the file
 ///        (io/mesh_file.h), requires it closed, places it (solids: scale, then translate; liquid
 ///        regions as written) and fills MeshFile::distance with its signed distance at the nodes
-///        of scene.grid() (io/mesh_distance.h). A kinematic mesh solid's path then shifts that
+///        of scene.grid() (io/mesh_distance.h) and, for a solid, MeshFile::surface with its
+///        placed triangles (for the ray queries of sim/solid_mesh_rays.h). A kinematic mesh solid's path then shifts that
 ///        field (sim/solid_geometry.h).
 /// @throws InputError naming the scene file and the field (`solids[2].mesh`) for a missing,
 ///         malformed or open mesh, and for `solids[i].rotate` on a mesh (not applied to meshes

@@ -74,7 +74,7 @@ Array3f relativeParticleDensity(const Particles& particles, const CellIndex& ind
 DensityCorrectionReport correctParticleDensity(Particles& particles, const CellIndex& index,
                                                const Array3f& pressurePhi, const Array3f& particlePhi,
                                                const std::array<Array3f, 3>& faceOpen,
-                                               const Array3f& solidNodes, const Array3f& sceneSolidNodes,
+                                               const SolidBoundary& solids, const Array3f& sceneSolidNodes,
                                                const Domain& domain,
                                                const GridGeometry& grid, int perCell, PressureSolver& solver,
                                                const PressureSettings& settings) {
@@ -114,7 +114,7 @@ DensityCorrectionReport correctParticleDensity(Particles& particles, const CellI
     for (std::size_t f = 0; f < d.size(); ++f)
       if (open[f] <= 0.0f) d[f] = 0.0f;
   }
-  report.particlesDeleted = advectParticles(particles, displacement, grid, solidNodes, domain, 1.0);
+  report.particlesDeleted = advectParticles(particles, displacement, grid, solids, domain, 1.0);
   return report;
 }
 

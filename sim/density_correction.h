@@ -11,6 +11,7 @@
 
 #include "sim/array3.h"
 #include "sim/grid.h"
+#include "sim/particle_advection.h"
 #include "sim/particle_transfer.h"
 #include "sim/particles.h"
 #include "sim/pressure_solver.h"
@@ -43,14 +44,16 @@ struct DensityCorrectionReport {
 ///        midpoint rule, pushed out of solids like advection. Velocities are not changed.
 /// @param pressurePhi      the liquid distance the pressure solve uses (extended into solids) [m]
 /// @param particlePhi      the particles' own surface (liquid_surface.h) [m]
-/// @param solidNodes       solid distance at the nodes, domain walls included [m]
+/// @param solids           solid distance at the nodes, domain walls included [m], and the mesh
+///                         solids' ray queries (a move that would cross a mesh wall stops at it;
+///                         timeFrom = timeTo: the correction is instantaneous)
 /// @param sceneSolidNodes  the same for the scene's solids alone [m]
 /// @param settings         the solve's tolerance (a loose one, ~1e-3, is enough: this is a
 ///                         correction that repeats every frame)
 DensityCorrectionReport correctParticleDensity(Particles& particles, const CellIndex& index,
                                                const Array3f& pressurePhi, const Array3f& particlePhi,
                                                const std::array<Array3f, 3>& faceOpen,
-                                               const Array3f& solidNodes, const Array3f& sceneSolidNodes,
+                                               const SolidBoundary& solids, const Array3f& sceneSolidNodes,
                                                const Domain& domain,
                                                const GridGeometry& grid, int perCell, PressureSolver& solver,
                                                const PressureSettings& settings);

@@ -19,6 +19,8 @@
 #include "sim/particle_transfer.h"
 #include "sim/pressure_solver.h"
 #include "sim/solid_geometry.h"
+#include "sim/solid_mesh_rays.h"
+#include "sim/thin_wall_faces.h"
 #include "sim/velocity_extrapolation.h"
 
 namespace fluidsound::sim {
@@ -81,6 +83,7 @@ struct FluidSolver::Workspace {
   TransferWorkspace transfer;           ///< sort and particle → grid buffers, reused every substep
   FaceMask reached;                     ///< faces particles reached (P2G weight > 0)
   PressureSolver pressure;
+  SolidMeshRays meshWalls;              ///< ray queries against the mesh solids (thin walls)
   std::vector<EmitterState> emitters;   ///< one per scene emitter
   bool solidsMove = false;
 };
@@ -89,9 +92,11 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
     : scene_(scene), properties_(properties), grid_(scene.grid()), work_(std::make_unique<Workspace>()) {
   work_->emitters.resize(scene.emitters.size());
   for (const Solid& s : scene.solids) work_->solidsMove = work_->solidsMove || !s.path.empty();
+  work_->meshWalls = SolidMeshRays(scene.solids);
   work_->solidNodes = solidNodeDistance(grid_, scene.domain, scene.solids, 0.0);
   work_->sceneSolidNodes = solidNodeDistance(grid_, withoutWalls(scene.domain), scene.solids, 0.0);
   work_->faceOpen = faceOpenFractions(work_->solidNodes, grid_);
+  closeFacesAcrossThinWalls(work_->faceOpen, work_->solidNodes, work_->meshWalls, grid_, 0.0);
   work_->solidVelocity = solidFaceVelocity(grid_, scene.domain, scene.solids, 0.0);
   const int perCell = scene.solver.particlesPerCell;
   particles_ = seedLiquid(grid_, scene.liquid, work_->solidNodes, perCell, scene.seed);
@@ -132,7 +137,8 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   settings.tolerance = kDensityCorrectionTolerance;
   settings.maxIterations = scene_.solver.maxPressureIterations;
   const DensityCorrectionReport correction = correctParticleDensity(
-      particles_, before, extendIntoSolids(particlePhi, w.solidNodes, grid_), particlePhi, w.faceOpen, w.solidNodes,
+      particles_, before, extendIntoSolids(particlePhi, w.solidNodes, grid_), particlePhi, w.faceOpen,
+      SolidBoundary{w.solidNodes, w.meshWalls, time_, time_},
       w.sceneSolidNodes, scene_.domain, grid_, scene_.solver.particlesPerCell, w.pressure, settings);
   stats.particlesDeleted += correction.particlesDeleted;
   stats.densityIterations += correction.solve.iterations;
@@ -146,7 +152,8 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   limits.target = scene_.solver.particlesPerCell;
   limits.minimum = std::min(limits.minimum, limits.target);
   limits.maximum = std::max(limits.maximum, 2 * limits.target);
-  const ReseedingCount count = reseedParticles(particles_, after, liquidPhi_, w.solidNodes, velocity_, grid_, limits,
+  const ReseedingCount count = reseedParticles(particles_, after, liquidPhi_, SolidBoundary{w.solidNodes, w.meshWalls, time_, time_},
+                                               velocity_, grid_, limits,
                                                scene_.seed, ++reseedPasses_);
   assignParticleIds(particles_.id, nextParticleId_);
   stats.particlesReseeded += count.added;
@@ -204,6 +211,7 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
     w.solidNodes = solidNodeDistance(grid_, scene_.domain, scene_.solids, time_ + dt);
     w.sceneSolidNodes = solidNodeDistance(grid_, withoutWalls(scene_.domain), scene_.solids, time_ + dt);
     w.faceOpen = faceOpenFractions(w.solidNodes, grid_);
+    closeFacesAcrossThinWalls(w.faceOpen, w.solidNodes, w.meshWalls, grid_, time_ + dt);
     w.solidVelocity = solidFaceVelocity(grid_, scene_.domain, scene_.solids, time_ + dt);
   }
   for (std::size_t e = 0; e < scene_.emitters.size(); ++e)
@@ -260,7 +268,9 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   constrainToSolids(velocity_, w.faceOpen, w.solidVelocity);
   gridToParticles(particles_, velocity_, flip ? w.oldVelocity : velocity_, grid_, scene_.solver);
   lap(seconds.gridToParticles);
-  stats.particlesDeleted += advectParticles(particles_, velocity_, grid_, w.solidNodes, scene_.domain, dt);
+  stats.particlesDeleted += advectParticles(particles_, velocity_, grid_,
+                                              SolidBoundary{w.solidNodes, w.meshWalls, time_, time_ + dt},
+                                              scene_.domain, dt);
   lap(seconds.advection);
   if (observer) {
     observer(LiquidState{particles_.position, particles_.velocity, particles_.id, liquidPhi_, velocity_, w.solidNodes,

@@ -19,8 +19,9 @@ constexpr double kGradientStep = 0.25;
 }  // namespace
 
 std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, const GridGeometry& grid,
-                            const Array3f& solidNodeDistance, const Domain& domain, double dt) {
+                            const SolidBoundary& solids, const Domain& domain, double dt) {
   const double h = grid.cellSize;
+  const Array3f& solidNodeDistance = solids.nodeDistance;
   std::vector<std::uint8_t> keep(particles.size(), 1);
   tbb::parallel_for(std::size_t{0}, particles.size(), [&](std::size_t p) {
     const Vec3 x{particles.position[p][0], particles.position[p][1], particles.position[p][2]};
@@ -28,6 +29,14 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
     const Vec3 mid{x[0] + 0.5 * dt * u0[0], x[1] + 0.5 * dt * u0[1], x[2] + 0.5 * dt * u0[2]};
     const Vec3 u1 = interpolateVelocity(velocity, grid, mid);
     Vec3 y{x[0] + dt * u1[0], x[1] + dt * u1[1], x[2] + dt * u1[2]};
+    if (const auto stop = solids.meshes.firstCrossing(x, y, solids.timeFrom, solids.timeTo, kMeshWallOffsetCells * h)) {
+      y = stop->position;
+      Vec3f& v = particles.velocity[p];
+      double into = 0.0;  // velocity towards the wall, relative to it [m/s] (normal faces the particle)
+      for (int a = 0; a < 3; ++a) into += (v[a] - stop->wallVelocity[a]) * stop->normal[a];
+      if (into < 0.0)
+        for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(v[a] - into * stop->normal[a]);
+    }
     for (int a = 0; a < 3; ++a) {
       if (domain.open[2 * a] && y[a] < domain.min[a]) keep[p] = 0;
       if (domain.open[2 * a + 1] && y[a] > domain.max[a]) keep[p] = 0;
@@ -46,8 +55,10 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
         norm += gradient[a] * gradient[a];
       }
       norm = std::sqrt(norm);
+      Vec3 pushed = y;
       if (norm > 0.0)
-        for (int a = 0; a < 3; ++a) y[a] += (-d + kSolidMargin * h) * gradient[a] / norm;
+        for (int a = 0; a < 3; ++a) pushed[a] += (-d + kSolidMargin * h) * gradient[a] / norm;
+      if (!solids.meshes.crosses(y, pushed, solids.timeTo)) y = pushed;
     }
     particles.position[p] = {static_cast<float>(y[0]), static_cast<float>(y[1]), static_cast<float>(y[2])};
   });

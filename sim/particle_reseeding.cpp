@@ -13,7 +13,7 @@
 namespace fluidsound::sim {
 
 ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, const Array3f& liquidPhi,
-                               const Array3f& solidNodes, const MacVelocity& velocity, const GridGeometry& grid,
+                               const SolidBoundary& solids, const MacVelocity& velocity, const GridGeometry& grid,
                                const ReseedingLimits& limits, std::uint64_t seed, std::uint64_t pass) {
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const float inside = static_cast<float>(-0.5 * grid.cellSize);
@@ -36,7 +36,14 @@ ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, con
         for (std::size_t n = held; n < static_cast<std::size_t>(limits.target); ++n) {
           const double u = unit(random), v = unit(random), w = unit(random);  // fixed draw order
           const Vec3 x = grid.worldFromGrid({i + u, j + v, k + w});
-          if (interpolateNodes(solidNodes, grid, x) <= 0.0f) continue;
+          if (interpolateNodes(solids.nodeDistance, grid, x) <= 0.0f) continue;
+          // Not behind a mesh wall thinner than the cell, as seen from the cell's liquid.
+          if (!solids.meshes.empty()) {
+            const Vec3 from = held > 0 ? Vec3{particles.position[first][0], particles.position[first][1],
+                                              particles.position[first][2]}
+                                       : grid.cellCentre(i, j, k);
+            if (solids.meshes.crosses(from, x, solids.timeTo)) continue;
+          }
           const Vec3 vel = interpolateVelocity(velocity, grid, x);
           out.push({static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2])},
                    {static_cast<float>(vel[0]), static_cast<float>(vel[1]), static_cast<float>(vel[2])});

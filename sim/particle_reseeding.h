@@ -8,6 +8,7 @@
 #include "sim/array3.h"
 #include "sim/grid.h"
 #include "sim/mac_velocity.h"
+#include "sim/particle_advection.h"
 #include "sim/particle_transfer.h"
 #include "sim/particles.h"
 
@@ -26,16 +27,17 @@ struct ReseedingCount {
 
 /// @brief Refills cells inside the liquid (φ at the centre ≤ −h/2: wholly liquid to first order)
 ///        that hold fewer than limits.minimum particles up to limits.target, at random positions
-///        in the cell outside solids, with the grid velocity there (affine part zero); thins cells
+///        in the cell outside solids (and, in a cell cut by a mesh wall, on the side of the cell's
+///        first particle: no ray from it to the new one crosses a mesh surface), with the grid velocity there (affine part zero); thins cells
 ///        holding more than limits.maximum. New positions come from `seed`, `pass` and the cell
 ///        index, so the result is the same for any thread count.
 /// @param particles    sorted by cell, `index` from that sort; still in cell order on return (new
 ///                     particles follow their cell's kept ones), so `index` is stale
 /// @param liquidPhi    liquid signed distance at cell centres [m]
-/// @param solidNodes   solid signed distance at the grid nodes [m]
+/// @param solids       the solids at solids.timeTo
 /// @param velocity     the grid velocity (extrapolated beyond the liquid) [m/s]
 ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, const Array3f& liquidPhi,
-                               const Array3f& solidNodes, const MacVelocity& velocity, const GridGeometry& grid,
+                               const SolidBoundary& solids, const MacVelocity& velocity, const GridGeometry& grid,
                                const ReseedingLimits& limits, std::uint64_t seed, std::uint64_t pass);
 
 }  // namespace fluidsound::sim

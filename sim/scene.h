@@ -14,6 +14,7 @@
 #include "sim/array3.h"
 #include "sim/bubble_settings.h"
 #include "sim/grid.h"
+#include "sim/triangle_mesh.h"
 
 namespace fluidsound::sim {
 
@@ -43,6 +44,9 @@ struct MeshFile {
   std::filesystem::path file;
   /// The mesh placed by its solid's scale and translation (not its path), once loaded.
   std::shared_ptr<const MeshNodeDistance> distance{};
+  /// The triangles placed the same way [m] (solids only, once loaded): what the ray queries
+  /// against thin walls use (sim/solid_mesh_rays.h).
+  std::shared_ptr<const TriangleMesh> surface{};
   /// Two references are equal when they name the same file (the distance follows from it).
   bool operator==(const MeshFile& other) const { return file == other.file; }
 };

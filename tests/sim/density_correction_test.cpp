@@ -23,6 +23,7 @@ struct Tank {
   Scene scene;
   GridGeometry grid;
   Array3f solidNodes, sceneSolidNodes;
+  SolidMeshRays noMeshes;
   std::array<Array3f, 3> faceOpen;
   Particles particles;
   PressureSolver solver;
@@ -46,7 +47,8 @@ struct Tank {
     const Array3f phi = liquidDistanceFromParticles(particles, index, grid, kRadius);
     PressureSettings settings;
     settings.tolerance = 1e-3;
-    return correctParticleDensity(particles, index, phi, phi, faceOpen, solidNodes, sceneSolidNodes, scene.domain,
+    return correctParticleDensity(particles, index, phi, phi, faceOpen, SolidBoundary{solidNodes, noMeshes, 0.0, 0.0},
+                                  sceneSolidNodes, scene.domain,
                                   grid, 8, solver, settings);
   }
   Array3f density() {

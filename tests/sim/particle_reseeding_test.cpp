@@ -48,11 +48,12 @@ struct Fixture {
   GridGeometry grid = grid4();
   Array3f liquidPhi{grid.cells, float(-kCell)};  // all liquid, a cell deep
   Array3f solidNodes{grid.nodeCount(), 1.0f};    // no solid
+  SolidMeshRays noMeshes;
   MacVelocity velocity{grid};
 
   ReseedingCount reseed(Particles& p, std::uint64_t pass = 1) {
     const CellIndex index = sortParticlesByCell(p, grid);
-    return reseedParticles(p, index, liquidPhi, solidNodes, velocity, grid, ReseedingLimits{}, 7, pass);
+    return reseedParticles(p, index, liquidPhi, SolidBoundary{solidNodes, noMeshes, 0.0, 0.0}, velocity, grid, ReseedingLimits{}, 7, pass);
   }
 };
 

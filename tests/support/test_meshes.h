@@ -85,6 +85,46 @@ inline sim::TriangleMesh icosphere(int subdivisions) {
   return mesh;
 }
 
+/// The closed surface swept by turning a closed profile polygon {(r, y)} (r ≥ 0 [m], in order
+/// around the cross-section of the material) about the y axis in `segments` steps: one quad
+/// (two triangles) per profile edge and step, a fan where an edge ends on the axis (r = 0), no
+/// triangles for an edge lying on the axis. Orientation is consistent (the closedness check's
+/// requirement); which way round depends on the profile's direction.
+inline sim::TriangleMesh revolvedMesh(const std::vector<std::array<double, 2>>& profile, int segments) {
+  sim::TriangleMesh mesh;
+  std::vector<std::vector<std::uint32_t>> ring(profile.size());  // vertex of each profile point per step
+  const double pi = std::acos(-1.0);
+  for (std::size_t q = 0; q < profile.size(); ++q) {
+    const auto [r, y] = profile[q];
+    const int copies = r > 0.0 ? segments : 1;
+    for (int s = 0; s < copies; ++s) {
+      const double angle = 2.0 * pi * s / segments;
+      ring[q].push_back(static_cast<std::uint32_t>(mesh.vertices.size()));
+      mesh.vertices.push_back({static_cast<float>(r * std::cos(angle)), static_cast<float>(y),
+                               static_cast<float>(r * std::sin(angle))});
+    }
+  }
+  const auto at = [&](std::size_t q, int s) { return ring[q][ring[q].size() == 1 ? 0 : s % segments]; };
+  for (std::size_t q = 0; q < profile.size(); ++q) {
+    const std::size_t n = (q + 1) % profile.size();
+    for (int s = 0; s < segments; ++s) {
+      const std::uint32_t a0 = at(q, s), a1 = at(q, s + 1), b0 = at(n, s), b1 = at(n, s + 1);
+      if (a0 != a1) mesh.triangles.push_back({a0, a1, b1});
+      if (b0 != b1) mesh.triangles.push_back({a0, b1, b0});
+    }
+  }
+  return mesh;
+}
+
+/// A drinking glass standing on y = 0, axis +y through x = z = 0: outer radius innerRadius +
+/// wall, inner radius innerRadius, height `height`, base `base` thick, open at the top [m].
+inline sim::TriangleMesh glassMesh(double innerRadius, double wall, double height, double base, int segments) {
+  const double outer = innerRadius + wall;
+  return revolvedMesh({{0.0, 0.0}, {outer, 0.0}, {outer, height}, {innerRadius, height}, {innerRadius, base},
+                       {0.0, base}},
+                      segments);
+}
+
 /// Writes `text` to `path` as it is (binary mode: no newline translation).
 inline void writeFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
