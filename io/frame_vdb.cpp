@@ -48,7 +48,10 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
   level->setName("surface");
   openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid> raster(*level);
   // Spheres of twice the particle radius overlap at the particle spacing (2r), so the union has
-  // no holes; eroding by r afterwards puts the surface back where the particles' own radius says.
+  // no holes; eroding by r afterwards would put the surface back where the particles' own radius
+  // says, which for a seeded layer is 0.21 h below its top (the top particles sit in the middle
+  // of the top sub-cells: measured, tests/io/frame_surface_test.cpp). Eroding 0.2 h less puts a
+  // flat surface where the liquid is (measured 0.01 h low).
   // OpenVDB skips spheres below 1.5 voxels by default; ours are ~0.5 voxel, so no minimum.
   constexpr double kRasterRadiusFactor = 2.0;
   raster.setRmin(0.0);
@@ -56,7 +59,8 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
   raster.finalize(true);
   openvdb::tools::LevelSetFilter<openvdb::FloatGrid> filter(*level);
   for (int i = 0; i < surface.smoothingIterations; ++i) filter.mean();
-  filter.offset(static_cast<float>((kRasterRadiusFactor - 1.0) * surface.particleRadius));
+  constexpr double kLayerTopLiftCells = 0.2;
+  filter.offset(static_cast<float>((kRasterRadiusFactor - 1.0) * surface.particleRadius - kLayerTopLiftCells * h));
 
   openvdb::Vec3fGrid::Ptr cellVelocity = openvdb::Vec3fGrid::create();
   cellVelocity->setTransform(transform);

@@ -33,7 +33,8 @@ struct DensityCorrectionReport {
 };
 
 /// @brief Moves the particles by D = −∇q, the displacement [m] whose divergence in each liquid
-///        cell is the target strain s = ρ/ρ₀ − ρ_expected: too dense spreads, too thin draws in.
+///        cell is the target strain s = ρ/ρ₀ − ρ_expected beyond a dead band of ±0.25 (the noise
+///        of jittered particles is left alone): too dense spreads, too thin draws in.
 ///        ρ_expected is what evenly spread particles would read there given the particles'
 ///        surface φ (1 inside, 7/8 half a cell below a flat surface), so a uniform liquid is left
 ///        alone at its surface too. Within a cell of a scene solid only excess is corrected (the

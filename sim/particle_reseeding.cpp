@@ -31,6 +31,11 @@ ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, con
         for (std::size_t p = first; p < first + keep; ++p) out.pushFrom(particles, p);
         count.removed += held - keep;
         if (held >= static_cast<std::size_t>(limits.minimum) || liquidPhi(i, j, k) > inside) continue;
+        // An empty cell that a mesh wall cuts is not refilled: no particle tells which side is
+        // liquid, and the cell's centre may lie inside the wall.
+        if (held == 0 && solids.meshes.cutsBox(grid.worldFromGrid({double(i), double(j), double(k)}),
+                                               grid.worldFromGrid({i + 1.0, j + 1.0, k + 1.0}), solids.timeTo))
+          continue;
         std::mt19937_64 random(cellStream(seed ^ (pass * 0xD1B54A32D192ED03ull), cell));
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         for (std::size_t n = held; n < static_cast<std::size_t>(limits.target); ++n) {
@@ -38,10 +43,8 @@ ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, con
           const Vec3 x = grid.worldFromGrid({i + u, j + v, k + w});
           if (interpolateNodes(solids.nodeDistance, grid, x) <= 0.0f) continue;
           // Not behind a mesh wall thinner than the cell, as seen from the cell's liquid.
-          if (!solids.meshes.empty()) {
-            const Vec3 from = held > 0 ? Vec3{particles.position[first][0], particles.position[first][1],
-                                              particles.position[first][2]}
-                                       : grid.cellCentre(i, j, k);
+          if (held > 0 && !solids.meshes.empty()) {
+            const Vec3 from{particles.position[first][0], particles.position[first][1], particles.position[first][2]};
             if (solids.meshes.crosses(from, x, solids.timeTo)) continue;
           }
           const Vec3 vel = interpolateVelocity(velocity, grid, x);

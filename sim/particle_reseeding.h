@@ -28,7 +28,8 @@ struct ReseedingCount {
 /// @brief Refills cells inside the liquid (φ at the centre ≤ −h/2: wholly liquid to first order)
 ///        that hold fewer than limits.minimum particles up to limits.target, at random positions
 ///        in the cell outside solids (and, in a cell cut by a mesh wall, on the side of the cell's
-///        first particle: no ray from it to the new one crosses a mesh surface), with the grid velocity there (affine part zero); thins cells
+///        first particle: no ray from it to the new one crosses a mesh surface; an empty cell that
+///        a mesh cuts is left empty), with the grid velocity there (affine part zero); thins cells
 ///        holding more than limits.maximum. New positions come from `seed`, `pass` and the cell
 ///        index, so the result is the same for any thread count.
 /// @param particles    sorted by cell, `index` from that sort; still in cell order on return (new

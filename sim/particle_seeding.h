@@ -12,7 +12,8 @@
 namespace fluidsound::sim {
 
 /// @brief Seeds `perCell` particles (per axis ∛perCell when a cube, else stratified-random) in
-///        every cell, at jittered positions, keeping those inside a liquid region and outside
+///        every cell, at jittered positions (a cube: jittered within the middle half of each
+///        sub-cell), keeping those inside a liquid region and outside
 ///        solids (solid distance interpolated from the nodes > 0). Velocity = the region's.
 ///        The jitter comes from `seed` and the cell index, so the result does not depend on threads.
 /// @param solidNodeDistance  signed distance to solids at the grid nodes [m] (negative inside)

@@ -15,6 +15,9 @@
 namespace fluidsound::sim {
 namespace {
 
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 struct DeviceRelease {
   void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
 };
@@ -28,11 +31,32 @@ using SceneHandle = std::unique_ptr<RTCSceneTy, SceneRelease>;
 struct MeshSolid {
   SceneHandle scene;
   std::vector<PathKey> path;
-  Vec3 lower{}, upper{};  ///< bounding box of the triangles in the solid's frame [m]
+  Vec3 lower{}, upper{};         ///< bounding box of the triangles in the solid's frame [m]
+  std::vector<Vec3> outward;     ///< unit normal of each triangle, out of the solid
 };
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+/// Unit normals out of a closed mesh: (v1 − v0) × (v2 − v0), turned round when the mesh is
+/// oriented inward (negative enclosed volume; sim/mesh_closedness.h accepts either way round).
+std::vector<Vec3> outwardNormals(const TriangleMesh& mesh) {
+  std::vector<Vec3> normal(mesh.triangles.size());
+  double volume6 = 0.0;  // 6 × the signed enclosed volume
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    Vec3 v[3];
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) v[c][k] = mesh.vertices[mesh.triangles[t][c]][k];
+    const Vec3 e1 = minus(v[1], v[0]), e2 = minus(v[2], v[0]);
+    normal[t] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    volume6 += dot(v[0], {v[1][1] * v[2][2] - v[1][2] * v[2][1], v[1][2] * v[2][0] - v[1][0] * v[2][2],
+                          v[1][0] * v[2][1] - v[1][1] * v[2][0]});
+  }
+  const double sign = volume6 < 0.0 ? -1.0 : 1.0;
+  for (Vec3& n : normal) {
+    const double length = std::sqrt(dot(n, n));
+    for (double& c : n) c = length > 0.0 ? sign * c / length : 0.0;
+  }
+  return normal;
+}
+
 
 /// Whether the segment's bounding box, widened by `margin`, misses the solid's box.
 bool missesBounds(const MeshSolid& solid, const Vec3& a, const Vec3& b, double margin) {
@@ -41,7 +65,7 @@ bool missesBounds(const MeshSolid& solid, const Vec3& a, const Vec3& b, double m
   return false;
 }
 
-RTCRayHit segmentRay(const Vec3& a, const Vec3& b) {
+RTCRayHit segmentRay(const Vec3& a, const Vec3& b, float tnear) {
   RTCRayHit r;
   std::memset(&r, 0, sizeof r);
   r.ray.org_x = static_cast<float>(a[0]);
@@ -50,7 +74,7 @@ RTCRayHit segmentRay(const Vec3& a, const Vec3& b) {
   r.ray.dir_x = static_cast<float>(b[0] - a[0]);
   r.ray.dir_y = static_cast<float>(b[1] - a[1]);
   r.ray.dir_z = static_cast<float>(b[2] - a[2]);
-  r.ray.tnear = 0.0f;
+  r.ray.tnear = tnear;
   r.ray.tfar = 1.0f;  // the direction is the whole segment: t ∈ [0, 1]
   r.ray.mask = std::numeric_limits<unsigned>::max();
   r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -64,16 +88,31 @@ struct SolidMeshRays::Impl {
   DeviceHandle device;
   std::vector<MeshSolid> solids;
 
-  /// Fraction t ∈ [0, 1] of the segment a → b (in the solid's frame) at its first surface
-  /// crossing, with the geometric normal there; nothing when it misses.
-  std::optional<std::pair<double, Vec3>> hit(const MeshSolid& solid, const Vec3& a, const Vec3& b) const {
-    RTCRayHit r = segmentRay(a, b);
+  /// Fraction t ∈ [tnear, 1] of the segment a → b (in the solid's frame) at its first surface
+  /// crossing, with the outward normal of the triangle hit; nothing when it misses.
+  std::optional<std::pair<double, Vec3>> hit(const MeshSolid& solid, const Vec3& a, const Vec3& b,
+                                             float tnear = 0.0f) const {
+    RTCRayHit r = segmentRay(a, b, tnear);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     rtcIntersect1(solid.scene.get(), &context, &r);
     if (r.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return std::pair<double, Vec3>{r.ray.tfar, Vec3{r.hit.Ng_x, r.hit.Ng_y, r.hit.Ng_z}};
+    return std::pair<double, Vec3>{r.ray.tfar, solid.outward[r.hit.primID]};
   }
+
+  /// The first crossing of a → b that enters the solid (against its outward normal): crossings
+  /// out of it (a mover that float rounding left a hair inside) are passed through.
+  std::optional<std::pair<double, Vec3>> entry(const MeshSolid& solid, const Vec3& a, const Vec3& b) const {
+    const Vec3 move = minus(b, a);
+    float tnear = 0.0f;
+    for (int exits = 0; exits < kMaxExitsPassed; ++exits) {
+      const auto found = hit(solid, a, b, tnear);
+      if (!found || dot(found->second, move) < 0.0) return found;
+      tnear = std::nextafter(static_cast<float>(found->first), 2.0f);
+    }
+    return std::nullopt;
+  }
+  static constexpr int kMaxExitsPassed = 4;
 };
 
 SolidMeshRays::SolidMeshRays() = default;
@@ -94,6 +133,7 @@ SolidMeshRays::SolidMeshRays(std::span<const Solid> solids) {
     const TriangleMesh& mesh = *std::get<MeshFile>(s->shape).surface;
     MeshSolid solid;
     solid.path = s->path;
+    solid.outward = outwardNormals(mesh);
     solid.scene.reset(rtcNewScene(impl_->device.get()));
     // Robust mode: watertight ray–triangle tests, so a ray through a shared edge or vertex of a
     // closed mesh always reports a hit (Embree's documentation of RTC_SCENE_FLAG_ROBUST).
@@ -130,14 +170,25 @@ bool SolidMeshRays::empty() const { return !impl_; }
 std::optional<WallStop> SolidMeshRays::firstCrossing(const Vec3& from, const Vec3& to, double timeFrom, double timeTo,
                                                      double offset) const {
   if (!impl_) return std::nullopt;
-  double first = 2.0;  // segment fraction of the first hit so far (> 1: none)
+  // The segment tested runs from ½·offset behind `from` to `offset` beyond `to` (in the solid's
+  // frame): a mover never ends closer than `offset` to a wall straight ahead of it, and one that
+  // float rounding left a hair inside a surface and that moves on inwards is caught by the
+  // surface behind it. Only entries into a solid count (outward normals), so a mover is always
+  // put back on the outside of the surface it met, whichever side the ray started.
+  double first = 2.0;  // fraction of the extended segment at the first entry so far (> 1: none)
   const MeshSolid* hitSolid = nullptr;
   Vec3 normal{}, a{}, b{};
   for (const MeshSolid& solid : impl_->solids) {
-    const Vec3 sa = minus(from, pathTranslation(solid.path, timeFrom));
-    const Vec3 sb = minus(to, pathTranslation(solid.path, timeTo));
-    if (sa == sb || missesBounds(solid, sa, sb, offset)) continue;
-    const auto found = impl_->hit(solid, sa, sb);
+    Vec3 sa = minus(from, pathTranslation(solid.path, timeFrom));
+    Vec3 sb = minus(to, pathTranslation(solid.path, timeTo));
+    const Vec3 move = minus(sb, sa);
+    const double length = std::sqrt(dot(move, move));
+    if (length == 0.0 || missesBounds(solid, sa, sb, offset)) continue;
+    for (int k = 0; k < 3; ++k) {
+      sa[k] -= 0.5 * offset * move[k] / length;
+      sb[k] += offset * move[k] / length;
+    }
+    const auto found = impl_->entry(solid, sa, sb);
     if (!found || found->first >= first) continue;
     first = found->first;
     normal = found->second;
@@ -146,21 +197,19 @@ std::optional<WallStop> SolidMeshRays::firstCrossing(const Vec3& from, const Vec
     b = sb;
   }
   if (hitSolid == nullptr) return std::nullopt;
-  const Vec3 move = minus(b, a);
-  const double length = std::sqrt(dot(move, move));
-  const double n = std::sqrt(dot(normal, normal));
-  const double facing = dot(normal, move) > 0.0 ? -1.0 / n : 1.0 / n;  // towards the side of `from`
   WallStop stop;
-  const double back = std::max(0.0, first - offset / length);
-  Vec3 local{};
+  stop.normal = normal;
+  Vec3 surface{}, local{};
   for (int k = 0; k < 3; ++k) {
-    stop.normal[k] = facing * normal[k];
-    local[k] = a[k] + back * move[k] + offset * stop.normal[k];
+    surface[k] = a[k] + first * (b[k] - a[k]);
+    local[k] = surface[k] + offset * normal[k];
   }
   // Stepping off the surface along its normal could, in a concave corner narrower than
-  // `offset`, cross another face: then stay where the move began (known to be on this side).
-  if (impl_->hit(*hitSolid, a, local)) local = a;
+  // `offset`, cross another face: then stay where the move began.
+  Vec3 justOutside{};
+  for (int k = 0; k < 3; ++k) justOutside[k] = surface[k] + 1e-3 * offset * normal[k];
   const Vec3 d1 = pathTranslation(hitSolid->path, timeTo);
+  if (impl_->hit(*hitSolid, justOutside, local)) local = minus(from, pathTranslation(hitSolid->path, timeFrom));
   for (int k = 0; k < 3; ++k) stop.position[k] = local[k] + d1[k];
   if (timeTo > timeFrom) {
     const Vec3 d0 = pathTranslation(hitSolid->path, timeFrom);
@@ -179,6 +228,15 @@ bool SolidMeshRays::crosses(const Vec3& a, const Vec3& b, double time) const {
     if (sa == sb || missesBounds(solid, sa, sb, 0.0)) continue;
     if (impl_->hit(solid, sa, sb)) return true;
   }
+  return false;
+}
+
+bool SolidMeshRays::cutsBox(const Vec3& lo, const Vec3& hi, double time) const {
+  if (!impl_) return false;
+  const auto corner = [&](int c) { return Vec3{c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}; };
+  for (int c = 0; c < 8; ++c)
+    for (int bit : {1, 2, 4})
+      if (!(c & bit) && crosses(corner(c), corner(c | bit), time)) return true;
   return false;
 }
 

@@ -2,6 +2,8 @@
 #include "sim/density_correction.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
@@ -131,18 +133,25 @@ TEST(DensityCorrection, AClumpSpreads) {
   }
 }
 
-// Claim: on the solver's jittered seeding the correction evens the particles out without moving
-// the surface: the RMS density error below the surface falls (measured 0.083 → 0.025 in five
-// passes) while the mean surface moves by less than 0.2 cell.
-// Reference: the seeded state. Tolerance: RMS at least 40 % lower after five passes; 0.2 cell for
-// the surface (the seeding itself puts the particle surface within ±0.15 cell of the box top).
-TEST(DensityCorrection, EvensOutJitteredParticlesAndKeepsTheSurface) {
+// Claim: the solver's own seeding (jittered within the middle half of each sub-cell) reads within
+// the correction's dead band (±0.25) everywhere, so five corrections leave the particles where
+// they are: a liquid at rest is not stirred by the correction (that stirring kept a resting tank
+// moving at 17 mm/s, docs/solver.md). The clump test above shows the correction still acts.
+// Reference: the seeded positions. Tolerance: RMS density error of the seeding below 0.1
+// (measured 0.041), no particle moved by more than 1e-4 cell (the solve's round-off).
+TEST(DensityCorrection, LeavesTheSeededLiquidAtRest) {
   Tank tank;
   tank.particles = seedLiquid(tank.grid, tank.scene.liquid, tank.solidNodes, 8, 1);
-  const double rms0 = tank.rmsDensityError(), surface0 = tank.meanSurface();
+  const std::vector<Vec3f> seeded = tank.particles.position;
+  EXPECT_LT(tank.rmsDensityError(), 0.1);
   for (int pass = 0; pass < 5; ++pass) tank.correct();
-  EXPECT_LT(tank.rmsDensityError(), 0.6 * rms0);
-  EXPECT_NEAR(tank.meanSurface(), surface0, 0.2 * kCell);
+  ASSERT_EQ(tank.particles.size(), seeded.size());
+  std::vector<Vec3f> moved = tank.particles.position;
+  std::sort(moved.begin(), moved.end());
+  std::vector<Vec3f> before = seeded;
+  std::sort(before.begin(), before.end());
+  for (std::size_t p = 0; p < moved.size(); ++p)
+    for (int a = 0; a < 3; ++a) ASSERT_NEAR(moved[p][a], before[p][a], 1e-4 * kCell) << "particle " << p;
 }
 
 // Determinism (brief): the same particles move the same on 1 and 2 threads.

@@ -87,15 +87,18 @@ TEST(FluidSolver, IdenticalParticlesForAnyThreadCount) {
   EXPECT_EQ(one, two);
 }
 
-// A tank at rest stays nearly at rest. The goal is < 1 mm/s after 2 s; the particle
-// surface (Zhu–Bridson, bumps of ~0.1 cell from the jittered seeding) drives currents: measured
-// 2.7 cm/s at 0.5 s, 1.4 cm/s at 1 s, 0.6 cm/s at 2 s. This is a regression bound (3 cm/s at
-// 0.5 s), not the goal — a known gap, recorded in docs/solver.md.
+// A tank at rest stays nearly at rest. The goal is < 1 mm/s after 2 s; the bumps of the
+// particle surface start gravity waves (the fastest particles move vertically at the surface):
+// measured 8.1 mm/s at 0.5 s, 6.5 at 1 s, 2.9 at 1.5 s, 2.3 mm/s at 2 s (median 0.3 mm/s). This
+// is a regression bound (3 mm/s at 2 s), not the goal — a known gap, recorded in docs/solver.md.
 TEST(FluidSolver, RestingTankStaysNearlyAtRest) {
   FluidSolver solver(tank(0.0735));
-  const FrameStats stats = solver.advanceTo(0.5);
-  EXPECT_LT(stats.maxSpeed, 0.03);
-  EXPECT_LT(stats.maxDivergence, 1e-4);
+  FrameStats stats;
+  for (int frame = 1; frame <= 60; ++frame) {
+    stats = solver.advanceTo(frame / 30.0);
+    ASSERT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
+  }
+  EXPECT_LT(stats.maxSpeed, 0.003);
 }
 
 }  // namespace

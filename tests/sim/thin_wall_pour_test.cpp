@@ -29,6 +29,11 @@ double facetRadius(double vertexRadius, double angle) {
   return vertexRadius * std::cos(step / 2) / std::cos(local - step / 2);
 }
 
+/// How deep inside the wall a particle must be to count as in it [m]: positions are floats
+/// (rounding ≈ 4e-9 m here) and a particle may graze a wall at any clearance down to that; the
+/// solver keeps stopped particles 5e-6 m (1e-3 h) outside.
+constexpr double kInsideTolerance = 1e-6;
+
 /// Where a point is relative to the glass.
 enum class Place { Cavity, Wall, Outside };
 
@@ -37,8 +42,9 @@ Place placeOf(const Vec3f& p) {
   const double r = std::hypot(x, z), angle = std::atan2(z, x);
   const double outer = facetRadius(kInner + kWall, angle), inner = facetRadius(kInner, angle);
   if (r > outer) return Place::Outside;
-  if (y >= kHeight) return Place::Cavity;  // above the rim, over the glass: the stream
-  if (y <= kBase || r >= inner) return Place::Wall;
+  if (r >= outer - kInsideTolerance || y >= kHeight - kInsideTolerance) return Place::Cavity;  // on the
+  // outer face (counted as outside the wall) or above the rim, over the glass (the stream)
+  if (y < kBase - kInsideTolerance || r > inner + kInsideTolerance) return Place::Wall;
   return Place::Cavity;
 }
 
