@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -20,9 +19,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
-#include "acoustics/bubble_oscillator.h"
 #include "acoustics/depth_shift.h"
-#include "acoustics/minnaert.h"
+#include "acoustics/instantaneous_frequency.h"
 #include "acoustics/oscillator_bank.h"
 #include "acoustics/track_interpolation.h"
 
@@ -48,11 +46,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// A bubble prepared for rendering: its constants, its track and the samples it occupies.
 struct Voice {
   const BubbleTrack* bubble = nullptr;     ///< only while preparing; rendering reads the copies below
-  double radius = 0.0;                     ///< R [m]
-  double birth = 0.0;                      ///< t_b [s]
+  RingingBubble ringing;                   ///< R, t_b, deep constants (instantaneous_frequency.h)
   TrackInterpolator track;
-  OscillatorConstants oscillator;          ///< deep, at the surface's ambient pressure
-  double adiabaticAngularFrequency = 0.0;  ///< ω₀ of the adiabatic model at p₀ [rad/s] (hydrostatic factor)
   double sampleDecay = 0.0;                ///< e^{−βΔt}
   double blockDecay = 0.0;                 ///< e^{−βBΔt}, B = kBlockSamples
   std::int64_t firstSample = 0;            ///< first sample at or after birth
@@ -81,60 +76,22 @@ struct RenderContext {
 };
 
 /// Instantaneous damped angular frequency [rad/s] of a voice with track values v at time t.
-double instantaneousAngularFrequency(const Voice& voice, const TrackValues& v, double t,
-                                     const SynthesisSettings& s) {
-  const double radius = voice.radius;
-  double w2 = voice.oscillator.angularFrequency * voice.oscillator.angularFrequency;  // ω² [rad²/s²]
-  if (std::isfinite(v.depth)) {
-    w2 *= freeSurfaceFrequencyRatioSquared(radius, v.depth);  // Strasberg 1953, docs/physics.md §5
-    if (s.model.hydrostatic) {
-      // p₀ → p₀ + ρgh acts on the restoring term; applied as the adiabatic model's ratio.
-      OscillatorModel adiabatic = s.model;
-      adiabatic.polytropic = PolytropicModel::Adiabatic;
-      const double p = ambientPressureAt(v.depth, s.liquid, s.model);
-      const double ratio = naturalAngularFrequency(radius, p, s.liquid, adiabatic) / voice.adiabaticAngularFrequency;
-      w2 *= ratio * ratio;
-    }
-  }
-  if (s.model.chirp) {  // van den Doel 2005: f(t) = f₀(1 + ξβt), docs/physics.md §7.4
-    const double rise = 1.0 + s.model.chirpRiseFactor * voice.oscillator.decayRate * (t - voice.birth);
-    w2 *= rise * rise;
-  }
-  // The free response of v̈ + 2βv̇ + ω₀²v = 0 rings at ω_d = √(ω₀² − β²) (docs/physics.md §1).
-  const double beta = voice.oscillator.decayRate;
-  return std::sqrt(std::max(w2 - beta * beta, 0.0));
+double voiceAngularFrequency(const Voice& voice, const TrackValues& v, double t, const SynthesisSettings& s) {
+  return instantaneousAngularFrequency(voice.ringing, v.depth, t, s.liquid, s.model);
 }
 
 Voice prepareVoice(const BubbleTrack& bubble, std::size_t channels, std::span<double> trackStorage,
                    const SynthesisSettings& s) {
-  const double p0 = s.liquid.ambientPressure, dt = 1.0 / s.sampleRate;
-  OscillatorModel adiabatic = s.model;
-  adiabatic.polytropic = PolytropicModel::Adiabatic;
-  Voice v{&bubble, bubble.radius, bubble.birth, TrackInterpolator(bubble, channels, trackStorage),
-          bubbleOscillator(bubble.radius, p0, s.liquid, s.model, bubble.amplitude),
-          naturalAngularFrequency(bubble.radius, p0, s.liquid, adiabatic)};
-  v.sampleDecay = std::exp(-v.oscillator.decayRate * dt);
-  v.blockDecay = std::exp(-v.oscillator.decayRate * kBlockSamples * dt);
+  const double dt = 1.0 / s.sampleRate;
+  Voice v{&bubble, ringingBubble(bubble, s.liquid, s.model), TrackInterpolator(bubble, channels, trackStorage)};
+  v.sampleDecay = std::exp(-v.ringing.deep.decayRate * dt);
+  v.blockDecay = std::exp(-v.ringing.deep.decayRate * kBlockSamples * dt);
   v.firstSample = static_cast<std::int64_t>(std::ceil(bubble.birth * s.sampleRate));
   v.firstBlock = v.firstSample / kBlockSamples;
-  v.endTime = bubble.birth + decayTime(v.oscillator.decayRate, s.cutoffDecibels);
+  v.endTime = bubble.birth + decayTime(v.ringing.deep.decayRate, s.cutoffDecibels);
   v.endSample = std::max(static_cast<std::int64_t>(std::ceil(v.endTime * s.sampleRate)), v.firstSample + 1);
   v.endBlock = (v.endSample - 1) / kBlockSamples + 1;
   return v;
-}
-
-/// Highest instantaneous angular frequency a voice reaches [rad/s]. The interpolant is monotone
-/// between track samples, so the extremes are at the samples.
-double peakAngularFrequency(const Voice& voice, const SynthesisSettings& s) {
-  TrackValues v;
-  v.depth = std::numeric_limits<double>::infinity();
-  double w = instantaneousAngularFrequency(voice, v, voice.bubble->birth, s);
-  for (const TrackSample& k : voice.bubble->track) {
-    v.depth = k.depth;
-    w = std::max(w, instantaneousAngularFrequency(voice, v, voice.bubble->birth, s));
-  }
-  if (s.model.chirp) w *= 1.0 + s.model.chirpRiseFactor * std::log(std::pow(10.0, s.cutoffDecibels / 20.0));
-  return w;
 }
 
 double wrapPhase(double phase) { return phase - kTwoPi * std::floor(phase / kTwoPi); }
@@ -151,11 +108,11 @@ VoiceState startVoice(const Voice& voice, const RenderContext& ctx) {
   VoiceState st;
   st.sample = voice.firstSample;
   const double t = static_cast<double>(st.sample) * ctx.dt;
-  const double age = t - voice.birth;  // < one sample: birth is not quantised
+  const double age = t - voice.ringing.birth;  // < one sample: birth is not quantised
   st.values = voice.track.evaluate(t, st.cursor);
-  st.angularFrequency = instantaneousAngularFrequency(voice, st.values, t, ctx.settings);
+  st.angularFrequency = voiceAngularFrequency(voice, st.values, t, ctx.settings);
   st.phase = wrapPhase(st.angularFrequency * age);
-  st.magnitude = voice.oscillator.amplitude * std::exp(-voice.oscillator.decayRate * age);
+  st.magnitude = voice.ringing.deep.amplitude * std::exp(-voice.ringing.deep.decayRate * age);
   return st;
 }
 
@@ -171,11 +128,11 @@ VoiceState advanceVoice(const Voice& voice, const VoiceState& st, std::int64_t s
   const auto n = static_cast<double>(count);
   const double t = static_cast<double>(sample) * ctx.dt;
   next.values = voice.track.evaluate(t, next.cursor);
-  next.angularFrequency = instantaneousAngularFrequency(voice, next.values, t, ctx.settings);
+  next.angularFrequency = voiceAngularFrequency(voice, next.values, t, ctx.settings);
   const double dw = (next.angularFrequency - st.angularFrequency) / n;
   next.phase = wrapPhase(st.phase + ctx.dt * (n * st.angularFrequency + dw * n * (n - 1.0) / 2.0));
   next.magnitude = st.magnitude * (count == kBlockSamples ? voice.blockDecay
-                                                          : std::exp(-voice.oscillator.decayRate * n * ctx.dt));
+                                                          : std::exp(-voice.ringing.deep.decayRate * n * ctx.dt));
   return next;
 }
 
@@ -327,7 +284,8 @@ SynthesisResult synthesize(const BubbleTrackSet& tracks, const SynthesisSettings
     voices[k] = prepareVoice(bubble, channels,
                              std::span(trackStorage.get() + trackOffset[k], trackStorage.get() + trackOffset[k + 1]),
                              settings);
-    aliased[k] = peakAngularFrequency(voices[k], settings) >= nyquistAngular;
+    aliased[k] = peakAngularFrequency(voices[k].ringing, bubble, settings.cutoffDecibels, settings.liquid,
+                                      settings.model) >= nyquistAngular;
     clamped[k] = std::count_if(bubble.track.begin(), bubble.track.end(), [&](const TrackSample& s) {
       return s.depth < kMinimumDepthOverRadius * bubble.radius;
     });
