@@ -48,6 +48,16 @@ TEST(RunCommand, RendersTheSceneAndReusesFreshStages) {
   EXPECT_FALSE(report["run"]["stages"]["simulate"]["reused"].get<bool>());
   EXPECT_EQ(report["run"]["radius_histogram"].size(), 10u);
   EXPECT_TRUE(report["results"].contains("frames")) << "the simulation's per-frame records stay";
+  // The spectrum summary (docs/synthesis.md, "What the spectrum shows"): one entry per listener
+  // with the measured and predicted centroid; their agreement is tested on a pour in
+  // pour_spectrum_test.cpp, here only that the report carries them.
+  ASSERT_TRUE(report["run"].contains("spectrum"));
+  ASSERT_EQ(report["run"]["spectrum"]["channels"].size(), 2u);
+  EXPECT_EQ(report["run"]["spectrum"]["channels"][1]["listener"], "right");
+  for (const auto& channel : report["run"]["spectrum"]["channels"]) {
+    EXPECT_TRUE(channel.contains("centroid_measured_hz")) << channel.dump();
+    EXPECT_TRUE(channel.contains("centroid_predicted_hz")) << channel.dump();
+  }
 
   CommandOutcome second = runFluidsound({"run", scene.string(), "-o", out.string(), "--quiet"});
   ASSERT_EQ(second.exitCode, 0) << second.err;
