@@ -71,9 +71,9 @@ TEST(PowerSpectrum, WeightsABurstAtTheEdgeLikeOneInTheMiddle) {
 // power 2m²σ⁴ (x² = n²(1 + 2m cos + m² cos²), E n² = σ²), on a background of the carrier's own
 // power fluctuation, white with one-sided density 4σ⁴/fs for Gaussian white noise (var n² = 2σ⁴).
 // Reference: the line's power summed over its Hann main lobe (±2 bins) against 2m²σ⁴, m = 0.3,
-// σ = 1. Tolerance 10 %: the background inside the 5 bins adds 5Δf·4σ⁴/fs = 20σ⁴/N (2.7 % of
+// σ = 1. Tolerance 10 %: the background inside the 5 bins adds 5Δf·4σ⁴/fs = 20σ⁴/N (1.4 % of
 // the line here), and the Welch estimate of the line bins scatters by the background's relative
-// fluctuation (~1/√(dof), dof ≈ 2·L/N·1.9 ≈ 90) scaled by its share — a few per cent at most.
+// fluctuation (~1/√(dof), dof ≈ 2·1.9·L/N ≈ 220 for 10 s) scaled by its share — a few per cent at most.
 TEST(PowerSpectrum, EnvelopeSpectrumHoldsTheModulationLine) {
   constexpr double kModulation = 0.3, kRate = 30.0;
   std::vector<float> x = gaussianNoise(2 * 48000 * 5, 11);
