@@ -8,6 +8,7 @@
 
 #include "sim/cell_interpolation.h"
 #include "sim/particle_advection.h"
+#include "sim/particle_seeding.h"
 #include "sim/velocity_extrapolation.h"
 
 namespace fluidsound::sim {
@@ -22,13 +23,18 @@ constexpr double kDensityDeadBand = 0.25;
 /// Cells of displacement extended beyond the liquid: particles near the surface read D there.
 constexpr int kExtendedLayers = 2;
 /// ρ/ρ₀ that relativeParticleDensity would read at cell (i, j, k) for particles spread evenly
-/// through the liquid that φ describes: the tent-weighted liquid fraction of the cell's tent
-/// support [−h, h]³, from 4 × 4 × 4 samples of φ (each 0.5 h wide, liquid fraction
-/// clamp(½ − φ/(0.5 h), 0, 1)). 1 deep inside, 0 far outside; 7/8 half a cell below a flat
-/// surface. Correcting against it, not against 1, leaves a uniform liquid's surface alone.
-double expectedDensity(const Array3f& phi, const GridGeometry& grid, int i, int j, int k) {
+/// through the liquid that φ describes, outside the scene's solids: the tent-weighted liquid
+/// fraction of the cell's tent support [−h, h]³, from 4 × 4 × 4 samples (each 0.5 h wide, liquid
+/// fraction clamp(½ − φ/(0.5 h), 0, 1) × clamp(½ + d_solid/(0.5 h), 0, 1)). 1 deep inside, 0 far
+/// outside; 7/8 half a cell below a flat surface or beside a flat solid wall. Correcting against
+/// it, not against 1, leaves a uniform liquid's surface alone and keeps the liquid as dense
+/// against a solid as anywhere (a solid then displaces its own volume, not more).
+/// @param solidCentre  the scene solids' distance at the cell centre [m]
+double expectedDensity(const Array3f& phi, const Array3f& sceneSolidNodes, double solidCentre,
+                       const GridGeometry& grid, int i, int j, int k) {
   const double h = grid.cellSize, value = phi(i, j, k);
-  if (value <= -1.5 * h) return 1.0;
+  const bool nearSolid = solidCentre < 1.5 * h;
+  if (value <= -1.5 * h && !nearSolid) return 1.0;
   if (value >= 1.5 * h) return 0.0;
   constexpr double offset[4] = {-0.75, -0.25, 0.25, 0.75}, weight[4] = {0.125, 0.375, 0.375, 0.125};
   const Vec3 centre = grid.cellCentre(i, j, k);
@@ -36,7 +42,8 @@ double expectedDensity(const Array3f& phi, const GridGeometry& grid, int i, int 
   for (int c = 0; c < 64; ++c) {
     const int a = c & 3, b = (c >> 2) & 3, d = c >> 4;
     const Vec3 x{centre[0] + offset[a] * h, centre[1] + offset[b] * h, centre[2] + offset[d] * h};
-    const double liquid = std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (0.5 * h), 0.0, 1.0);
+    double liquid = std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (0.5 * h), 0.0, 1.0);
+    if (nearSolid) liquid *= std::clamp(0.5 + interpolateNodes(sceneSolidNodes, grid, x) / (0.5 * h), 0.0, 1.0);
     sum += weight[a] * weight[b] * weight[d] * liquid;
   }
   return sum;
@@ -87,7 +94,6 @@ DensityCorrectionReport correctParticleDensity(Particles& particles, const CellI
                                                const PressureSettings& settings) {
   DensityCorrectionReport report;
   const Array3f density = relativeParticleDensity(particles, index, grid, perCell);
-  const double h = grid.cellSize;
   Array3f strain(grid.cells, 0.0f);  // target divergence of D [-] (D in metres, "Δt" = 1)
   std::vector<double> maxExcessOfSlab(static_cast<std::size_t>(grid.cells[2]), 0.0);
   tbb::parallel_for(0, grid.cells[2], [&](int k) {
@@ -100,15 +106,13 @@ DensityCorrectionReport correctParticleDensity(Particles& particles, const CellI
         for (int c = 0; c < 8; ++c) solid += sceneSolidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
         solid /= 8.0;
         if (solid <= 0.0) continue;  // a cell inside a solid holds no particles by design
-        const double excess = density(i, j, k) - expectedDensity(particlePhi, grid, i, j, k);
-        // Next to a solid the trilinear density reads low (no particles beyond the wall): only
-        // clumps are corrected there, or particles would be drawn into the wall.
+        const double excess =
+            density(i, j, k) - expectedDensity(particlePhi, sceneSolidNodes, solid, grid, i, j, k);
         const double banded = excess > kDensityDeadBand    ? excess - kDensityDeadBand
                               : excess < -kDensityDeadBand ? excess + kDensityDeadBand
                                                            : 0.0;
-        const double s = solid < h ? std::max(banded, 0.0) : banded;
-        strain(i, j, k) = static_cast<float>(s);
-        maxExcess = std::max(maxExcess, excess);
+        strain(i, j, k) = static_cast<float>(banded);
+        maxExcess = std::max(maxExcess, excess);  // (deficits beside solids too: see expectedDensity)
       }
   });
   for (double m : maxExcessOfSlab) report.maxExcess = std::max(report.maxExcess, m);

@@ -36,10 +36,11 @@ struct DensityCorrectionReport {
 ///        cell is the target strain s = ρ/ρ₀ − ρ_expected beyond a dead band of ±0.25 (the noise
 ///        of jittered particles is left alone): too dense spreads, too thin draws in.
 ///        ρ_expected is what evenly spread particles would read there given the particles'
-///        surface φ (1 inside, 7/8 half a cell below a flat surface), so a uniform liquid is left
-///        alone at its surface too. Within a cell of a scene solid only excess is corrected (the
-///        density reads low beside a wall, which would otherwise pull particles into it); cells
-///        inside solids are skipped. q = 0 on the free surface (ghost fluid), no flux through
+///        surface φ and the scene's solids (1 inside, 7/8 half a cell below a flat surface or
+///        beside a flat solid), so a uniform liquid is left alone at its surface and against
+///        solids, and liquid beside a solid is kept as dense as elsewhere (else particles keep a
+///        gap from solids and a submerged solid displaces more than its volume); cells inside
+///        solids are skipped. q = 0 on the free surface (ghost fluid), no flux through
 ///        solids: the pressure projection's operator with a target divergence. D is extended two
 ///        cells beyond the liquid, set to 0 on closed faces, and the particles move by the
 ///        midpoint rule, pushed out of solids like advection. Velocities are not changed.
