@@ -1,55 +1,67 @@
 // io/scene_meshes.cpp — see scene_meshes.h.
 #include "io/scene_meshes.h"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
 #include "io/input_error.h"
 #include "io/mesh_distance.h"
 #include "io/mesh_file.h"
+#include "sim/solid_geometry.h"
 
 namespace fluidsound::io {
 namespace {
-/// The mesh with p_world = scale · p_file + translate applied to its vertices (in double, then
-/// stored as float like the file's own coordinates).
-std::shared_ptr<const sim::TriangleMesh> placedMesh(const sim::TriangleMesh& mesh, const MeshPlacement& placement) {
-  auto placed = std::make_shared<sim::TriangleMesh>(mesh);
-  for (auto& vertex : placed->vertices)
-    for (int a = 0; a < 3; ++a)
-      vertex[a] = static_cast<float>(placement.scale * vertex[a] + placement.translate[a]);
-  return placed;
+/// The mesh placed as a solid (docs/scene.md, "Placement of a solid", without the path): scaled
+/// about the origin, rotated about the centre of its scaled bounding box, translated; in double,
+/// then stored as float like the file's own coordinates.
+sim::TriangleMesh placedMesh(sim::TriangleMesh mesh, double scale, const sim::Vec3& rotateDegrees,
+                             const sim::Vec3& translate) {
+  sim::Vec3 lower{1e300, 1e300, 1e300}, upper{-1e300, -1e300, -1e300};
+  for (const auto& v : mesh.vertices)
+    for (int a = 0; a < 3; ++a) {
+      lower[a] = std::min(lower[a], scale * v[a]);
+      upper[a] = std::max(upper[a], scale * v[a]);
+    }
+  sim::Vec3 centre{};
+  for (int a = 0; a < 3; ++a) centre[a] = 0.5 * (lower[a] + upper[a]);
+  for (auto& v : mesh.vertices) {
+    const sim::Vec3 turned =
+        sim::rotateByEulerDegrees({scale * v[0] - centre[0], scale * v[1] - centre[1], scale * v[2] - centre[2]},
+                                  rotateDegrees);
+    for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(centre[a] + turned[a] + translate[a]);
+  }
+  return mesh;
 }
 
-/// Reads and checks the mesh `file` names and fills its distance at the scene grid's nodes and,
-/// for a solid (`withSurface`), its placed triangles.
-void loadMesh(sim::MeshFile& file, const MeshPlacement& placement, const sim::Scene& scene,
-              const std::string& jsonPath, bool withSurface) {
+/// Reads and checks the mesh `file` names, places it with `place` and fills its distance at the
+/// scene grid's nodes and, for a solid (`withSurface`), its placed triangles.
+template <typename Place>
+void loadMesh(sim::MeshFile& file, const Place& place, const sim::Scene& scene, const std::string& jsonPath,
+              bool withSurface) {
   const MeshReference reference{scene.file.string(), jsonPath};
-  const sim::TriangleMesh mesh = readMeshFile(file.file, reference);
+  const sim::TriangleMesh mesh = place(readMeshFile(file.file, reference));
   requireClosedMesh(mesh, file.file, reference);
   auto distance = std::make_shared<sim::MeshNodeDistance>();
   distance->grid = scene.grid();
-  distance->nodes = meshNodeDistance(mesh, placement, distance->grid);
+  distance->nodes = meshNodeDistance(mesh, MeshPlacement{}, distance->grid);
   file.distance = std::move(distance);
-  if (withSurface) file.surface = placedMesh(mesh, placement);
+  if (withSurface) file.surface = std::make_shared<const sim::TriangleMesh>(mesh);
 }
 }  // namespace
 
 void loadSceneMeshes(sim::Scene& scene) {
   for (std::size_t i = 0; i < scene.liquid.size(); ++i)
     if (auto* mesh = std::get_if<sim::MeshFile>(&scene.liquid[i].shape))
-      loadMesh(*mesh, {}, scene, "liquid[" + std::to_string(i) + "].mesh", false);
+      loadMesh(*mesh, [](sim::TriangleMesh m) { return m; }, scene, "liquid[" + std::to_string(i) + "].mesh", false);
   for (std::size_t i = 0; i < scene.solids.size(); ++i) {
     sim::Solid& solid = scene.solids[i];
     auto* mesh = std::get_if<sim::MeshFile>(&solid.shape);
     if (mesh == nullptr) continue;
-    const std::string path = "solids[" + std::to_string(i) + "]";
-    const sim::Vec3& r = solid.rotateDegrees;
-    if (r[0] != 0.0 || r[1] != 0.0 || r[2] != 0.0)
-      throw InputError(scene.file.string(), path + ".rotate",
-                       "[0, 0, 0] for a mesh solid (rotation is applied to boxes only; rotate the mesh file)",
-                       "a rotation");
-    loadMesh(*mesh, MeshPlacement{solid.scale, solid.translate}, scene, path + ".mesh", true);
+    const auto place = [&solid](sim::TriangleMesh m) {
+      return placedMesh(std::move(m), solid.scale, solid.rotateDegrees, solid.translate);
+    };
+    loadMesh(*mesh, place, scene, "solids[" + std::to_string(i) + "].mesh", true);
   }
 }
 

@@ -7,14 +7,14 @@
 namespace fluidsound::io {
 
 /// @brief For every mesh liquid region and mesh solid of `scene`: reads the file
-///        (io/mesh_file.h), requires it closed, places it (solids: scale, then translate; liquid
-///        regions as written) and fills MeshFile::distance with its signed distance at the nodes
-///        of scene.grid() (io/mesh_distance.h) and, for a solid, MeshFile::surface with its
-///        placed triangles (for the ray queries of sim/solid_mesh_rays.h). A kinematic mesh solid's path then shifts that
-///        field (sim/solid_geometry.h).
+///        (io/mesh_file.h), places it (solids: scale about the origin, rotate about the centre of
+///        the scaled bounding box, translate — docs/scene.md; liquid regions as written), requires
+///        it closed and fills MeshFile::distance with its signed distance at the nodes of
+///        scene.grid() (io/mesh_distance.h) and, for a solid, MeshFile::surface with its placed
+///        triangles (for the ray queries of sim/solid_mesh_rays.h). A kinematic mesh solid's
+///        path then shifts both (sim/solid_geometry.h, sim/solid_mesh_rays.h).
 /// @throws InputError naming the scene file and the field (`solids[2].mesh`) for a missing,
-///         malformed or open mesh, and for `solids[i].rotate` on a mesh (not applied to meshes
-///         yet: rotate the mesh file itself)
+///         malformed or open mesh
 void loadSceneMeshes(sim::Scene& scene);
 
 }  // namespace fluidsound::io

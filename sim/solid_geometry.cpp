@@ -46,6 +46,18 @@ Vec3 localFromWorld(const Mat3& worldFromLocal, const Vec3& v) {
   return r;
 }
 
+}  // namespace
+
+Vec3 rotateByEulerDegrees(const Vec3& offset, const Vec3& degrees) {
+  const Mat3 r = rotationFromEulerDegrees(degrees);
+  Vec3 out{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[i] += r[i][j] * offset[j];
+  return out;
+}
+
+namespace {
+
 /// A box or sphere solid placed at one time, ready for distance queries.
 struct PlacedSolid {
   bool isBox = false;
