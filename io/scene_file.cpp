@@ -61,6 +61,34 @@ std::string roundedNumber(double value, int digits) {
   return text;
 }
 
+/// The rules of `domain.cell` (docs/scene.md), shared by the parser and the `--cell` override:
+/// > 0, 2 … 1024 cells per axis, each extent a whole number of cells (within
+/// kWholeCellTolerance). `cellText` is the cell size as the input wrote it; `fail(expected,
+/// found)` reports the first rule broken and must not return.
+template <class Fail>
+void requireValidCellSize(const sim::Domain& d, const std::string& cellText, const Fail& fail) {
+  if (!(d.cell > 0.0) || !std::isfinite(d.cell)) fail("a number > 0 (metres)", cellText);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double cells = (d.max[a] - d.min[a]) / d.cell;
+    if (!(cells >= kMinCellsPerAxis - 0.5 && cells < kMaxCellsPerAxis + 0.5)) {
+      fail("a cell size (metres) giving 2 to 1024 cells per axis",
+           cellText + " (" + roundedNumber(cells, 6) + (cells == 1 ? " cell" : " cells") +
+               " along " + std::string(kAxisNames[a]) + ")");
+    }
+  }
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double extent = d.max[a] - d.min[a];
+    const double cells = extent / d.cell;
+    const double nearest = std::round(cells);
+    if (std::abs(cells - nearest) > kWholeCellTolerance * nearest) {
+      fail("a cell size (metres) that divides the extent along " + std::string(kAxisNames[a]) +
+               " (" + formatNumber(extent) + " m) into a whole number of cells, such as " +
+               roundedNumber(extent / nearest, 10) + " (" + roundedNumber(nearest, 10) + " cells)",
+           cellText + " (" + roundedNumber(cells, 6) + " cells)");
+    }
+  }
+}
+
 // ---- the validating reader ----------------------------------------------------------------------
 
 /// Turns a parsed JSON document into a sim::Scene, or throws InputError at the first problem.
@@ -132,36 +160,12 @@ class SceneReader {
     d.max = check_.requiredVector(object, path, "max", "metres");
     requireOrdered(check_, object, path, d.min, d.max);
     d.cell = check_.requiredNumber(object, path, "cell", "a number > 0 (metres)", positive);
-    requireWholeCellCounts(d, object["cell"]);
+    requireValidCellSize(d, describe(object["cell"]),
+                         [&](const std::string& expected, const std::string& found) {
+                           check_.fail(memberPath(path, "cell"), expected, found);
+                         });
     if (const json* open = findMember(object, "open")) d.open = openFaces(*open, "domain.open");
     return d;
-  }
-
-  /// 2 … 1024 cells per axis, each extent a whole number of cells (within kWholeCellTolerance).
-  void requireWholeCellCounts(const sim::Domain& d, const json& cell) const {
-    const std::string path = "domain.cell";
-    for (std::size_t a = 0; a < 3; ++a) {
-      const double cells = (d.max[a] - d.min[a]) / d.cell;
-      if (!(cells >= kMinCellsPerAxis - 0.5 && cells < kMaxCellsPerAxis + 0.5)) {
-        check_.fail(path, "a cell size (metres) giving 2 to 1024 cells per axis",
-                    describe(cell) + " (" + roundedNumber(cells, 6) +
-                        (cells == 1 ? " cell" : " cells") + " along " + std::string(kAxisNames[a]) +
-                        ")");
-      }
-    }
-    for (std::size_t a = 0; a < 3; ++a) {
-      const double extent = d.max[a] - d.min[a];
-      const double cells = extent / d.cell;
-      const double nearest = std::round(cells);
-      if (std::abs(cells - nearest) > kWholeCellTolerance * nearest) {
-        check_.fail(
-            path,
-            "a cell size (metres) that divides the extent along " + std::string(kAxisNames[a]) +
-                " (" + formatNumber(extent) + " m) into a whole number of cells, such as " +
-                roundedNumber(extent / nearest, 10) + " (" + roundedNumber(nearest, 10) + " cells)",
-            describe(cell) + " (" + roundedNumber(cells, 6) + " cells)");
-      }
-    }
   }
 
   std::array<bool, 6> openFaces(const json& value, const std::string& path) const {
@@ -314,6 +318,17 @@ sim::Scene parseScene(std::string_view text, const std::filesystem::path& file) 
 
 sim::Scene readScene(const std::filesystem::path& path) {
   return parseScene(readInputFile(path), path);
+}
+
+sim::Scene withCellSize(sim::Scene scene, double cell, const std::string& source) {
+  scene.domain.cell = cell;
+  std::string text = formatNumber(cell);  // shortest round trip; "0.0" -> "0", as typed
+  if (text.ends_with(".0")) text.resize(text.size() - 2);
+  requireValidCellSize(scene.domain, text,
+                       [&](const std::string& expected, const std::string& found) {
+                         throw InputError("", source, expected, found);
+                       });
+  return scene;
 }
 
 }  // namespace fluidsound::io

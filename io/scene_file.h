@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "sim/scene.h"
@@ -33,5 +34,18 @@ sim::Scene parseScene(std::string_view text, const std::filesystem::path& file);
 /// @brief Reads and parses a scene file.
 /// @throws InputError if the file is missing, a folder or unreadable, or as parseScene
 sim::Scene readScene(const std::filesystem::path& path);
+
+/// @brief The scene with another grid cell size: the `--cell` override of `fluidsound simulate`
+///        and `run` (docs/cli.md), checked by the rules of `domain.cell` (docs/scene.md: > 0,
+///        each extent a whole number of cells within a relative 10⁻⁶, 2 … 1024 cells per axis).
+///        Call it before io/scene_meshes.h loads the meshes: their node distances are sampled on
+///        scene.grid(), which follows the cell size.
+/// @param scene   a parsed scene (meshes not loaded yet)
+/// @param cell    the new cell size [m]
+/// @param source  what the error names in place of the file and JSON path, e.g. "--cell"
+/// @throws InputError with no file and `source` as the field, e.g. `--cell: expected a cell size
+///         (metres) that divides the extent along x (0.6 m) into a whole number of cells, such as
+///         0.006976744186 (86 cells), found 0.007 (85.7143 cells)`
+sim::Scene withCellSize(sim::Scene scene, double cell, const std::string& source);
 
 }  // namespace fluidsound::io

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <variant>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -88,8 +90,29 @@ struct FluidSolver::Workspace {
   bool solidsMove = false;
 };
 
+namespace {
+/// A mesh's node distance must be sampled on the solver's own grid: one loaded before a change of
+/// the cell size (`--cell`) would be read, silently, at the old resolution.
+void requireMeshesOnGrid(const Scene& scene, const GridGeometry& grid) {
+  const auto check = [&grid](const Shape& shape) {
+    const auto* mesh = std::get_if<MeshFile>(&shape);
+    if (mesh == nullptr || !mesh->distance) return;  // unloaded: reported where it is read
+    const GridGeometry& g = mesh->distance->grid;
+    if (g.cells != grid.cells || g.cellSize != grid.cellSize || g.origin != grid.origin)
+      throw std::invalid_argument(mesh->file.string() +
+                                  ": the mesh's distance was sampled on another grid (cell " +
+                                  std::to_string(g.cellSize) + " m, the scene's " +
+                                  std::to_string(grid.cellSize) +
+                                  " m): load the meshes after the cell size is final");
+  };
+  for (const LiquidRegion& region : scene.liquid) check(region.shape);
+  for (const Solid& solid : scene.solids) check(solid.shape);
+}
+}  // namespace
+
 FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
     : scene_(scene), properties_(properties), grid_(scene.grid()), work_(std::make_unique<Workspace>()) {
+  requireMeshesOnGrid(scene, grid_);
   work_->emitters.resize(scene.emitters.size());
   for (const Solid& s : scene.solids) work_->solidsMove = work_->solidsMove || !s.path.empty();
   work_->meshWalls = SolidMeshRays(scene.solids);

@@ -23,6 +23,7 @@
 #include "io/input_error.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
+#include "tools/cell_option.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
 #include "tools/synth_command.h"
@@ -36,6 +37,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
   c->add_option("scene", o.scene, "scene file (fluidsound.scene/1)")->required();
   c->add_option("-o,--output", o.output, "output folder")->required();
   c->add_flag("--fresh", o.fresh, "run every stage again, even if its artefacts are up to date");
+  addCellOption(*c, o.cell);
   addCommonOptions(*c, o.common);
   return c;
 }
@@ -54,9 +56,13 @@ std::string fileBytes(const std::filesystem::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// The inputs' fingerprint: the scene file, every mesh it names and the program's version.
+/// The inputs' fingerprint: the scene file, the grid cell size it runs at (the file's or
+/// --cell's), every mesh it names and the program's version.
 std::string inputHash(const sim::Scene& scene) {
   std::uint64_t h = fnv1a(fileBytes(scene.file));
+  char cell[40];
+  std::snprintf(cell, sizeof cell, "cell %.17g m", scene.domain.cell);
+  h = fnv1a(cell, h);
   const auto addMesh = [&h](const sim::Shape& shape) {
     if (const auto* mesh = std::get_if<sim::MeshFile>(&shape)) h = fnv1a(fileBytes(mesh->file), h);
   };
@@ -140,7 +146,8 @@ Json spectrumSummary(const acoustics::BubbleTrackSet& tracks, const std::filesys
 int runRunCommand(const RunOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const sim::Scene scene = io::readScene(o.scene);  // bad input stops here, before any output
+  // Bad input (the scene, --cell) stops here, before any output.
+  const sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   const std::string hash = inputHash(scene);
   const std::filesystem::path out = o.output, stagesPath = out / "stages.json";
   Json stages = o.fresh ? Json::object() : readStages(stagesPath);
@@ -170,6 +177,7 @@ int runRunCommand(const RunOptions& o) {
   simulate.common = o.common;
   simulate.scene = o.scene;
   simulate.output = o.output;
+  simulate.cell = o.cell;
   runStage("simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"});
   // simulate's report.json is the base of the run's report; read it before later stages change
   // anything (a reused simulation keeps its own).
@@ -193,6 +201,7 @@ int runRunCommand(const RunOptions& o) {
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
   const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);
   Json run = {{"scene", o.scene},
+              {"cell_size", scene.domain.cell},
               {"input_hash", hash},
               {"stages", stageReport},
               {"bubbles", tracks.bubbles.size()},

@@ -3,6 +3,7 @@
 // artefacts of every stage whose inputs have not changed (so an interrupted run resumes).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "tools/command_options.h"
@@ -14,6 +15,7 @@ struct RunOptions {
   std::string scene;
   std::string output;
   bool fresh = false;  ///< run every stage even if its artefacts are up to date
+  std::optional<double> cell;  ///< --cell: grid cell size [m] replacing domain.cell
 };
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options);

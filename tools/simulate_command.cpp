@@ -21,6 +21,7 @@
 #include "sim/bubble_model.h"
 #include "sim/fluid_solver.h"
 #include "sim/liquid_surface.h"
+#include "tools/cell_option.h"
 #include "tools/progress_display.h"
 #include "tools/run_report.h"
 
@@ -32,6 +33,7 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
   c->add_option("-o,--output", o.output, "output folder")->required();
   c->add_option("--frames", o.frames, "frames A:B to write (inclusive; default all)");
   c->add_flag("--ply", o.ply, "also write frames/NNNN.ply with the particles");
+  addCellOption(*c, o.cell);
   addCommonOptions(*c, o.common);
   return c;
 }
@@ -66,7 +68,8 @@ std::string frameName(int frame, const char* extension) {
 int runSimulateCommand(const SimulateOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  sim::Scene scene = io::readScene(o.scene);
+  // The cell size is final before the meshes load: their node distances are sampled on its grid.
+  sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   io::loadSceneMeshes(scene);
   const int total = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
   const FrameRange range = parseFrames(o.frames, total);

@@ -2,6 +2,7 @@
 // writing frames/NNNN.vdb (and .ply with --ply) and report.json.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "tools/command_options.h"
@@ -14,6 +15,7 @@ struct SimulateOptions {
   std::string output;
   std::string frames;  ///< "A:B" (inclusive), default all
   bool ply = false;
+  std::optional<double> cell;  ///< --cell: grid cell size [m] replacing domain.cell
 };
 
 CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& options);

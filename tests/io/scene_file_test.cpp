@@ -162,5 +162,40 @@ TEST(SceneFile, SphereDropExampleParses) {
   EXPECT_EQ(scene.listeners[0].name, "listener");
 }
 
+// ---- the cell-size override (`--cell`) ---------------------------------------------------
+
+TEST(SceneFile, CellOverrideSetsTheGrid) {
+  // Claim: withCellSize replaces domain.cell and nothing else; the grid follows (0.6 × 0.3 ×
+  // 0.1 m at 1 cm: 60 × 30 × 10 cells; decimal sizes pass as for domain.cell: 0.1 / 0.004).
+  const sim::Scene scene = parseScene(fullScene().dump(), "tank.json");
+  sim::Scene coarse = withCellSize(scene, 0.01, "--cell");
+  EXPECT_EQ(coarse.grid().cells, (sim::Index3{60, 30, 10}));
+  EXPECT_EQ(withCellSize(scene, 0.004, "--cell").grid().cells, (sim::Index3{150, 75, 25}));
+  coarse.domain.cell = scene.domain.cell;
+  EXPECT_EQ(coarse, scene) << "only the cell size changes";
+}
+
+TEST(SceneFile, CellOverrideKeepsTheDomainRules) {
+  // Claim: the override is checked by domain.cell's own rules, and the error names the option
+  // instead of a file and JSON path. Reference: the messages of domain.cell (docs/scene.md,
+  // "Errors"), for the 0.6 × 0.3 × 0.1 m domain of fullScene().
+  const sim::Scene scene = parseScene(fullScene().dump(), "tank.json");
+  const auto errorFor = [&scene](double cell) {
+    return test::inputErrorOf(
+        [&](const std::string&) { (void)withCellSize(scene, cell, "--cell"); }, std::to_string(cell));
+  };
+  EXPECT_STREQ(errorFor(0.007).what(),
+               "--cell: expected a cell size (metres) that divides the extent along x (0.6 m) into a "
+               "whole number of cells, such as 0.006976744186 (86 cells), found 0.007 (85.7143 "
+               "cells)");
+  EXPECT_STREQ(errorFor(0.0005).what(),
+               "--cell: expected a cell size (metres) giving 2 to 1024 cells per axis, found "
+               "0.0005 (1200 cells along x)");
+  EXPECT_STREQ(errorFor(0.0).what(), "--cell: expected a number > 0 (metres), found 0");
+  EXPECT_STREQ(errorFor(-0.01).what(), "--cell: expected a number > 0 (metres), found -0.01");
+  EXPECT_EQ(errorFor(0.007).file(), "");
+  EXPECT_EQ(errorFor(0.007).field(), "--cell");
+}
+
 }  // namespace
 }  // namespace fluidsound::io
