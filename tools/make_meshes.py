@@ -14,14 +14,17 @@ computed in closed form.
   wall 0.002 m (outer radius 0.032 m), height 0.100 m, base 0.004 m thick, 48 segments. An open
   cup: outer side, inner side, top rim annulus, outer bottom disk, inner bottom (the floor of the
   cup at y = 0.004 m). The wall is thinner than a 5 mm grid cell on purpose (thin-wall tests).
-- basin.obj: a round wash basin, origin at the centre of its base, axis +y. Outer radius 0.13 m,
-  height 0.08 m, floor 0.015 m thick; the inside widens from radius 0.100 m at the floor to
-  0.115 m at the rim, so the wall is 0.015 m thick at the rim and 0.030 m at the floor (thick
-  enough for 5 mm cells without thin-wall handling). 48 segments. Fits a 0.3 x 0.2 x 0.3 m domain.
+- basin.obj: a rectangular wash basin, origin at the centre of its base, axis +y. Outside
+  0.26 m (x) by 0.20 m (z), 0.08 m high; walls and floor 0.015 m thick (three 5 mm cells: it
+  needs no thin-wall handling), so the inside is 0.23 m by 0.17 m above a floor at y = 0.015 m.
+  Fits a 0.3 x 0.2 x 0.3 m domain. Rectangular and axis-aligned on purpose: every face then lies
+  on a node plane of a 5 mm grid centred on it, and still water stays still in it; in a round
+  basin the staircased wall stirs still water and the bubble model makes bubbles there
+  (docs/scenes.md, "tap_drip").
 - basin_water.obj: the water resting in basin.obj placed at the origin: the inside of the basin
-  from its floor (y = 0.015 m) up to y = 0.035 m (2 cm deep, about 0.66 L), as a closed
-  frustum following the inner wall. Liquid meshes are used as written (docs/scene.md), so this
-  one is in the basin's frame: a scene puts the basin at the origin to use it.
+  from its floor (y = 0.015 m) up to y = 0.035 m (2 cm deep, 0.782 L), a closed box. Liquid
+  meshes are used as written (docs/scene.md), so this one is in the basin's frame: a scene puts
+  the basin at the origin to use it.
 - stone.obj: a low-poly pebble about 0.02 m in radius, centred at the origin: an icosahedron
   split once (42 vertices, 80 triangles), each vertex pushed out to a radius drawn uniformly
   from 0.017-0.023 m and the whole flattened to 0.7 in y. Star-shaped about its centre, so it
@@ -43,7 +46,7 @@ import random
 import sys
 import tempfile
 
-SEGMENTS = 48  # around the axis of the glass and the basin
+SEGMENTS = 48  # around the axis of the glass
 
 # glass.obj [m]
 GLASS_INNER_RADIUS = 0.030
@@ -52,11 +55,10 @@ GLASS_HEIGHT = 0.100
 GLASS_BASE = 0.004
 
 # basin.obj [m]
-BASIN_OUTER_RADIUS = 0.13
+BASIN_OUTER_HALF = (0.13, 0.10)  # half sizes along x and z
+BASIN_WALL = 0.015
 BASIN_HEIGHT = 0.08
 BASIN_FLOOR = 0.015
-BASIN_INNER_RADIUS_FLOOR = 0.100
-BASIN_INNER_RADIUS_RIM = 0.115
 BASIN_WATER_TOP = 0.035  # water surface height in basin_water.obj [m]
 
 # stone.obj
@@ -79,11 +81,9 @@ class Mesh:
         self.vertices.append(tuple(p))
         return len(self.vertices) - 1
 
-    def ring(self, radius, y, segments=SEGMENTS):
-        """A circle of `segments` vertices about the y axis at height y."""
-        return [self.vertex((radius * math.cos(2 * math.pi * k / segments), y,
-                             radius * math.sin(2 * math.pi * k / segments)))
-                for k in range(segments)]
+    def ring(self, outline, y):
+        """The (x, z) points of `outline` as vertices at height y."""
+        return [self.vertex((x, y, z)) for x, z in outline]
 
     def triangle(self, a, b, c, outward):
         """Adds (a, b, c), turned so that its normal points along `outward` (a vector)."""
@@ -135,64 +135,80 @@ def towards_axis(p):
 UP, DOWN = (0.0, 1.0, 0.0), (0.0, -1.0, 0.0)
 
 
-def polygon_area(radius, segments=SEGMENTS):
-    """Area of the regular polygon inscribed in a circle of `radius` [m^2]."""
-    return 0.5 * segments * radius * radius * math.sin(2 * math.pi / segments)
+def circle(radius, segments=SEGMENTS):
+    """The regular polygon inscribed in a circle about the y axis, as (x, z) points, turning from
+    +x towards +z."""
+    return [(radius * math.cos(2 * math.pi * k / segments), radius * math.sin(2 * math.pi * k / segments))
+            for k in range(segments)]
 
 
-def frustum_volume(r_bottom, r_top, height, segments=SEGMENTS):
-    """Volume between two parallel regular polygons of circumradii r_bottom and r_top, their
-    vertices joined in pairs (a polygonal frustum) [m^3]: h/3 (A1 + A2 + sqrt(A1 A2))."""
-    a1, a2 = polygon_area(r_bottom, segments), polygon_area(r_top, segments)
+def rectangle(half_x, half_z):
+    """The rectangle |x| <= half_x, |z| <= half_z as (x, z) corners, turning as circle() does."""
+    return [(half_x, half_z), (-half_x, half_z), (-half_x, -half_z), (half_x, -half_z)]
+
+
+def area(outline):
+    """Area enclosed by an (x, z) outline [m^2] (shoelace formula)."""
+    n = len(outline)
+    return abs(sum(outline[k][0] * outline[(k + 1) % n][1] - outline[(k + 1) % n][0] * outline[k][1]
+                   for k in range(n))) / 2
+
+
+def frustum_volume(bottom, top, height):
+    """Volume between two similar (x, z) outlines `height` apart, their points joined in pairs
+    [m^3]: h/3 (A1 + A2 + sqrt(A1 A2)) (a prism when the outlines are equal)."""
+    a1, a2 = area(bottom), area(top)
     return height / 3 * (a1 + a2 + math.sqrt(a1 * a2))
 
 
 # ---- the meshes -------------------------------------------------------------------------------
 
-def cup(outer_radius, inner_radius_floor, inner_radius_rim, height, base):
-    """An open-topped cup (glass or basin), origin at the centre of its base, axis +y: outer
-    bottom disk, outer side, rim annulus, inner side (a frustum when the two inner radii differ),
-    inner floor. Returns (mesh, volume of the polygonal solid [m^3])."""
+def cup(outer, inner_floor, inner_rim, height, base):
+    """An open-topped cup (glass or basin), origin at the centre of its base, axis +y, from
+    three (x, z) outlines of equal length: the outside (a prism), the inside at the floor and at
+    the rim (similar outlines; a frustum when they differ). Surfaces: outer bottom, outer side,
+    rim, inner side, inner floor. Returns (mesh, volume of the solid [m^3])."""
     m = Mesh()
     bottom_centre = m.vertex((0.0, 0.0, 0.0))
-    outer_bottom = m.ring(outer_radius, 0.0)
-    outer_top = m.ring(outer_radius, height)
-    inner_top = m.ring(inner_radius_rim, height)
-    inner_bottom = m.ring(inner_radius_floor, base)
+    outer_bottom = m.ring(outer, 0.0)
+    outer_top = m.ring(outer, height)
+    inner_top = m.ring(inner_rim, height)
+    inner_bottom = m.ring(inner_floor, base)
     floor_centre = m.vertex((0.0, base, 0.0))
     m.disk(bottom_centre, outer_bottom, DOWN)
     m.band(outer_bottom, outer_top, radial)
     m.band(outer_top, inner_top, lambda p: UP)
     m.band(inner_top, inner_bottom, towards_axis)  # faces the hollow: outward from the material
     m.disk(floor_centre, inner_bottom, UP)
-    volume = (polygon_area(outer_radius) * height
-              - frustum_volume(inner_radius_floor, inner_radius_rim, height - base))
-    return m, volume
+    return m, area(outer) * height - frustum_volume(inner_floor, inner_rim, height - base)
 
 
 def glass():
-    return cup(GLASS_INNER_RADIUS + GLASS_WALL, GLASS_INNER_RADIUS, GLASS_INNER_RADIUS,
-               GLASS_HEIGHT, GLASS_BASE)
+    inner = circle(GLASS_INNER_RADIUS)
+    return cup(circle(GLASS_INNER_RADIUS + GLASS_WALL), inner, inner, GLASS_HEIGHT, GLASS_BASE)
+
+
+def basin_inside():
+    return rectangle(BASIN_OUTER_HALF[0] - BASIN_WALL, BASIN_OUTER_HALF[1] - BASIN_WALL)
 
 
 def basin():
-    return cup(BASIN_OUTER_RADIUS, BASIN_INNER_RADIUS_FLOOR, BASIN_INNER_RADIUS_RIM,
-               BASIN_HEIGHT, BASIN_FLOOR)
+    inside = basin_inside()
+    return cup(rectangle(*BASIN_OUTER_HALF), inside, inside, BASIN_HEIGHT, BASIN_FLOOR)
 
 
 def basin_water():
-    """The inside of basin() from its floor to BASIN_WATER_TOP: a closed polygonal frustum."""
-    slope = (BASIN_INNER_RADIUS_RIM - BASIN_INNER_RADIUS_FLOOR) / (BASIN_HEIGHT - BASIN_FLOOR)
-    top_radius = BASIN_INNER_RADIUS_FLOOR + slope * (BASIN_WATER_TOP - BASIN_FLOOR)
+    """The inside of basin() from its floor to BASIN_WATER_TOP: a closed box."""
+    inside = basin_inside()
     m = Mesh()
     bottom_centre = m.vertex((0.0, BASIN_FLOOR, 0.0))
-    bottom = m.ring(BASIN_INNER_RADIUS_FLOOR, BASIN_FLOOR)
-    top = m.ring(top_radius, BASIN_WATER_TOP)
+    bottom = m.ring(inside, BASIN_FLOOR)
+    top = m.ring(inside, BASIN_WATER_TOP)
     top_centre = m.vertex((0.0, BASIN_WATER_TOP, 0.0))
     m.disk(bottom_centre, bottom, DOWN)
     m.band(bottom, top, radial)
     m.disk(top_centre, top, UP)
-    return m, frustum_volume(BASIN_INNER_RADIUS_FLOOR, top_radius, BASIN_WATER_TOP - BASIN_FLOOR)
+    return m, area(inside) * (BASIN_WATER_TOP - BASIN_FLOOR)
 
 
 def stone():
@@ -262,7 +278,7 @@ def check_closed(name, mesh, volume):
         if abs(exact - volume) > 1e-9 * volume:
             sys.exit(f"make_meshes.py: {name}: signed volume {exact} m^3, expected {volume} m^3")
         # Rounding moves each vertex by at most sqrt(3)/2 * 1e-7 m: at most that times the area.
-        if abs(signed - volume) > area(positions, mesh.triangles) * math.sqrt(3) / 2 * 10.0 ** -DECIMALS:
+        if abs(signed - volume) > surface_area(positions, mesh.triangles) * math.sqrt(3) / 2 * 10.0 ** -DECIMALS:
             sys.exit(f"make_meshes.py: {name}: rounded signed volume {signed} m^3, expected {volume} m^3")
     return signed
 
@@ -273,7 +289,7 @@ def signed_volume(positions, triangles):
     return sum(dot(positions[a], cross(positions[b], positions[c])) for a, b, c in triangles) / 6
 
 
-def area(positions, triangles):
+def surface_area(positions, triangles):
     """Surface area [m^2]."""
     total = 0.0
     for a, b, c in triangles:
