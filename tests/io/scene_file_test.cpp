@@ -150,7 +150,7 @@ TEST(SceneFile, DamBreakExampleParses) {
 
 TEST(SceneFile, SphereDropExampleParses) {
   // scenes/sphere_drop.scene.json: a 4 cm sphere centred 0.25 m up, over water 0.1 m deep in an
-  // open-topped 0.4 × 0.4 × 0.2 m tank, cells of 8 mm, default listener.
+  // open-topped 0.4 × 0.4 × 0.2 m tank, cells of 8 mm, heard by a stereo pair.
   const sim::Scene scene = readScene(sourceDir() / "scenes" / "sphere_drop.scene.json");
   EXPECT_EQ(scene.grid().cells, (sim::Index3{50, 50, 25}));
   EXPECT_EQ(scene.domain.open, (std::array<bool, 6>{false, false, false, true, false, false}));
@@ -158,8 +158,9 @@ TEST(SceneFile, SphereDropExampleParses) {
   EXPECT_EQ(scene.liquid[0].shape, (sim::Shape{sim::Box{{0, 0, 0}, {0.4, 0.1, 0.2}}}));
   EXPECT_EQ(scene.liquid[1].shape, (sim::Shape{sim::Sphere{{0.2, 0.25, 0.1}, 0.04}}));
   EXPECT_EQ(scene.time.duration, 2.0);
-  ASSERT_EQ(scene.listeners.size(), 1u);
-  EXPECT_EQ(scene.listeners[0].name, "listener");
+  ASSERT_EQ(scene.listeners.size(), 2u);
+  EXPECT_EQ(scene.listeners[0].name, "left");
+  EXPECT_EQ(scene.listeners[1].name, "right");
 }
 
 // ---- the cell-size override (`--cell`) ---------------------------------------------------
