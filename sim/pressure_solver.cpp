@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/parallel_for.h>
+
 namespace fluidsound::sim {
 namespace {
 
@@ -133,7 +135,8 @@ void PressureSolver::updateVelocity(MacVelocity& velocity, const Array3f& liquid
   for (int a = 0; a < 3; ++a) {
     const Index3 n = grid.faceCount(a);
     valid_[a] = Array3<std::uint8_t>(n, 0);
-    for (int k = 0; k < n[2]; ++k)
+    // Each face is written by the slab that holds it only: the same result on any thread count.
+    tbb::parallel_for(0, n[2], [&](int k) {
       for (int j = 0; j < n[1]; ++j)
         for (int i = 0; i < n[0]; ++i) {
           float& u = velocity[a](i, j, k);
@@ -161,6 +164,7 @@ void PressureSolver::updateVelocity(MacVelocity& velocity, const Array3f& liquid
           u = static_cast<float>(u - gradientScale * (pPlus - pMinus) / theta);
           valid_[a](i, j, k) = 1;
         }
+    });
   }
 }
 
