@@ -101,5 +101,21 @@ TEST(FluidSolver, RestingTankStaysNearlyAtRest) {
   EXPECT_LT(stats.maxSpeed, 0.003);
 }
 
+// A tank with a sloped floor (a box rotated 15° about z, meeting the −x wall under 7 cm of water)
+// stays nearly at rest. The goal is < 1 mm/s after 2 s; measured 6.6 mm/s at 0.5 s,
+// 2.9 mm/s at 2 s (10–30 cm/s while the under-seeded corner cells between slope and wall read as
+// a free surface, docs/solver.md). A regression bound (5 mm/s at 2 s), not the goal.
+TEST(FluidSolver, SlopedFloorTankStaysNearlyAtRest) {
+  Scene scene = tank(0.0735);
+  Solid slope;
+  slope.shape = Box{{-0.05, -0.1, -0.05}, {0.21, 0.02, 0.21}};
+  slope.rotateDegrees = {0.0, 0.0, 15.0};
+  scene.solids.push_back(slope);
+  FluidSolver solver(scene);
+  FrameStats stats;
+  for (int frame = 1; frame <= 60; ++frame) stats = solver.advanceTo(frame / 30.0);
+  EXPECT_LT(stats.maxSpeed, 0.005);
+}
+
 }  // namespace
 }  // namespace fluidsound::sim
