@@ -58,7 +58,16 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
       Vec3 pushed = y;
       if (norm > 0.0)
         for (int a = 0; a < 3; ++a) pushed[a] += (-d + kSolidMargin * h) * gradient[a] / norm;
-      if (!solids.meshes.crosses(y, pushed, solids.timeTo)) y = pushed;
+      if (!solids.meshes.crosses(y, pushed, solids.timeTo)) {
+        y = pushed;
+        if (norm > 0.0) {  // no velocity into the wall it was pushed back from (as at a mesh wall)
+          Vec3f& v = particles.velocity[p];
+          double into = 0.0;
+          for (int a = 0; a < 3; ++a) into += v[a] * gradient[a] / norm;
+          if (into < 0.0)
+            for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(v[a] - into * gradient[a] / norm);
+        }
+      }
     }
     particles.position[p] = {static_cast<float>(y[0]), static_cast<float>(y[1]), static_cast<float>(y[2])};
   });

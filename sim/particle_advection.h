@@ -31,8 +31,9 @@ inline constexpr double kMeshWallOffsetCells = 1e-3;
 ///          side, and loses the velocity component into the wall (relative to the wall's);
 ///        - one beyond an open domain face is deleted; the others are clamped inside;
 ///        - one that ends inside a solid by the nodal distance (< 0) is pushed back along the
-///          distance gradient to kSolidMargin cells outside, unless that push would cross a
-///          mesh surface (a thin wall the grid does not resolve: the ray test is the truth).
+///          distance gradient to kSolidMargin cells outside and loses its velocity into the
+///          solid, unless that push would cross a mesh surface (a thin wall the grid does not
+///          resolve: the ray test is the truth).
 /// @return particles deleted at open faces
 std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, const GridGeometry& grid,
                             const SolidBoundary& solids, const Domain& domain, double dt);
