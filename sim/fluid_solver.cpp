@@ -63,29 +63,33 @@ void constrainToSolids(MacVelocity& velocity, const std::array<Array3f, 3>& face
 /// the solid's face and drive currents at the contact line (measured: a sphere piercing the
 /// surface of a still tank, 13–23 cm/s with every solid cell liquid).
 /// Also extended: a cell cut by a solid (a corner inside it) whose φ < h/10 and whose neighbour
-/// against gravity (`up`) is liquid — a cell under liquid, against a wall. In a corner between
-/// a slope and a wall the trilinear nodal distance reads more of the cell as solid than it is,
-/// seeding and reseeding leave it short of particles, and its φ reads as a free surface (|φ| <
-/// 0.06 h) at the bottom of the tank: measured 10–30 cm/s in a tank with a 15° floor, 2.9 mm/s
-/// with this rule. Cells at a contact line have air above them and are left alone.
+/// against gravity (`up`) is liquid or such a cut cell itself — a cell under liquid, against a
+/// wall. In a corner between a slope and a wall the trilinear nodal distance reads more of the
+/// cell as solid than it is, seeding and reseeding leave it short of particles, and its φ reads
+/// as a free surface (|φ| < 0.06 h) at the bottom of the tank: measured 10–30 cm/s in a tank
+/// with a 15° floor, 2.9 mm/s with this rule. Along a wall off the node planes the cut cells of
+/// a column read φ ≈ 0 one above the other, hence "or such a cut cell". The topmost cut cell,
+/// at a contact line, has air above it and is left alone.
 Array3f extendIntoSolids(const Array3f& liquidPhi, const Array3f& solidNodes, const GridGeometry& grid,
                          const Index3& up) {
   Array3f phi = liquidPhi;
   const float inside = static_cast<float>(-0.5 * grid.cellSize);
+  // A cell a solid cuts (a corner inside it) whose φ reads no higher than just above its centre.
+  const auto wetCutCell = [&](const Index3& c) {
+    if (liquidPhi(c[0], c[1], c[2]) >= kCutCellSurfaceLimit * grid.cellSize) return false;
+    for (int n = 0; n < 8; ++n)
+      if (solidNodes(c[0] + (n & 1), c[1] + ((n >> 1) & 1), c[2] + (n >> 2)) < 0.0f) return true;
+    return false;
+  };
   for (int k = 0; k < grid.cells[2]; ++k)
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
-        float solid = 0.0f, lowest = 0.0f;
-        for (int c = 0; c < 8; ++c) {
-          const float d = solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
-          solid += d;
-          lowest = std::min(lowest, d);
-        }
+        float solid = 0.0f;
+        for (int c = 0; c < 8; ++c) solid += solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
         if (solid >= 0.0f) {
           const Index3 above{i + up[0], j + up[1], k + up[2]};
-          const bool underLiquid = liquidPhi.contains(above[0], above[1], above[2]) &&
-                                   liquidPhi(above[0], above[1], above[2]) < 0.0f;
-          if (lowest < 0.0f && underLiquid && liquidPhi(i, j, k) < kCutCellSurfaceLimit * grid.cellSize)
+          if (wetCutCell({i, j, k}) && liquidPhi.contains(above[0], above[1], above[2]) &&
+              (liquidPhi(above[0], above[1], above[2]) < 0.0f || wetCutCell(above)))
             phi(i, j, k) = std::min(phi(i, j, k), inside);
           continue;
         }
