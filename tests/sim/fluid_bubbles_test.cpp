@@ -41,7 +41,7 @@ TEST(FluidBubbles, StillTankMakesNoBubble) {
 
 // Claim (issue 6): still water against a curved solid makes no bubble either: a sphere (r = 5 cm)
 // piercing the surface of the still tank, its contact line a circle on a curved wall. Measured:
-// none in 2 s, particles at most 1.0–1.4 cm/s (13–23 cm/s and 31 bubbles while the pressure solve
+// none in 2 s, particles at most 1.1 cm/s, 0.7 cm/s at 2 s (13–23 cm/s and 31 bubbles while the pressure solve
 // counted the sphere's cap above the water as liquid, docs/solver.md). Reference: none may form.
 // Tolerance: exact.
 TEST(FluidBubbles, StillTankAroundACurvedSolidMakesNoBubble) {
