@@ -57,6 +57,8 @@ struct SimulateCase {
   /// What follows "fluidsound: error: WORK/NAMED: " ({dir} stands for WORK): the whole line for
   /// bad input, its start for output errors (whose end is the system's wording).
   const char* message;
+  /// When set: the text of WORK/mesh.obj, written beside the scene (a bad mesh's content).
+  const char* meshText = nullptr;
 };
 
 /// fullScene() on a grid small and short enough (12 × 6 × 2 cells, frames 0 … 3) that it
@@ -99,6 +101,22 @@ const std::vector<SimulateCase> kSimulateCases = {
      "out", kExitBadInput, "scene.json",
      "solids[0].mesh: expected the path of a readable mesh file (OBJ or PLY; relative to the scene "
      R"(file's folder), found "glass.obj" ({dir}/glass.obj: no such file))"},
+    // bad meshes (issue 5): empty, a NaN vertex, an open liquid mesh
+    {"liquid_empty_mesh", Input::Scene, "/liquid/0", R"({"mesh": "mesh.obj"})", Output::Fresh, "out",
+     kExitBadInput, "scene.json",
+     "liquid[0].mesh: expected a mesh with at least one triangle, found no faces (0 vertices) ({dir}/mesh.obj)",
+     "# nothing\n"},
+    {"liquid_nan_vertex", Input::Scene, "/liquid/0", R"({"mesh": "mesh.obj"})", Output::Fresh, "out",
+     kExitBadInput, "scene.json",
+     "liquid[0].mesh: expected a vertex \"v x y z\" of 3 finite numbers within float range "
+     "(|x| <= 3.4e38), found \"nan\" in \"v 0 nan 0\" ({dir}/mesh.obj, line 3)",
+     "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n"},
+    {"liquid_open_mesh", Input::Scene, "/liquid/0", R"({"mesh": "mesh.obj"})", Output::Fresh, "out",
+     kExitBadInput, "scene.json",
+     "liquid[0].mesh: expected a closed triangle mesh (every edge shared by exactly two triangles "
+     "that run along it in opposite directions), found 3 boundary edges (holes; the first between "
+     "vertices 2 and 3) ({dir}/mesh.obj)",
+     "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n"},
     {"listeners", Input::Scene, "/listeners/1/position", nullptr, Output::Fresh, "out",
      kExitBadInput, "scene.json",
      "listeners[1].position: expected an array of 3 numbers [x, y, z] (metres), found nothing "
@@ -133,8 +151,9 @@ const std::vector<SimulateCase> kSimulateCases = {
      "out/report.json", "cannot write: folder"},
 };
 
-/// Makes the row's scene file.
+/// Makes the row's scene file (and mesh file).
 void prepareInput(const SimulateCase& row, const fs::path& scene) {
+  if (row.meshText != nullptr) writeFile(scene.parent_path() / "mesh.obj", row.meshText);
   switch (row.input) {
     case Input::Scene:
       writeFile(scene, (row.pointer == nullptr ? tinyScene()
