@@ -1,0 +1,56 @@
+// The bubble model's cost against the liquid solver's (not a test): the whole of
+// scenes/dam_break.scene.json and scenes/pour_tank.scene.json with the bubble model attached as
+// `fluidsound simulate` runs it, reporting the fluid stage's seconds (the solver's substeps and
+// once-per-frame particle maintenance), the bubble model's seconds and its share of the fluid stage
+// (issue 6: bubble model and transfer together under 10 %; the transfer stage is timed by
+// tools/bench.sh through `fluidsound run`).
+//   build/tests/fluidsound_bench --benchmark_filter=BubbleShare
+#include <benchmark/benchmark.h>
+#include <oneapi/tbb/info.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/scene_file.h"
+#include "io/scene_meshes.h"
+#include "sim/bubble_model.h"
+#include "sim/fluid_solver.h"
+
+namespace {
+
+using namespace fluidsound;
+
+/// Simulates the scene's whole duration frame by frame with the bubble model on every substep.
+void BM_BubbleShare(benchmark::State& state, const std::string& sceneName) {
+  sim::Scene scene = io::readScene(std::string(FLUIDSOUND_SOURCE_DIR) + "/scenes/" + sceneName + ".scene.json");
+  io::loadSceneMeshes(scene);
+  const int frames = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
+  double fluid = 0.0, bubbles = 0.0, substeps = 0.0, made = 0.0;
+  for (auto _ : state) {
+    sim::FluidSolver solver(scene);
+    sim::BubbleModel model(scene.bubbles, scene.seed, scene.gravity);
+    const sim::SubstepObserver observer = [&model](const sim::LiquidState& liquid, double t, double dt) {
+      model.step(liquid, t, dt);
+    };
+    for (int f = 1; f <= frames; ++f) {
+      const sim::FrameStats stats = solver.advanceTo(f / scene.time.fps, observer);
+      model.sampleFrame(solver.time());
+      fluid += stats.stageSeconds.substepTotal() + stats.stageSeconds.particleMaintenance;
+      bubbles += stats.stageSeconds.bubbles;
+      substeps += stats.substeps;
+    }
+    made += static_cast<double>(model.bubbles().size());
+  }
+  const double runs = static_cast<double>(state.iterations());
+  state.counters["fluid_s"] = fluid / runs;
+  state.counters["bubbles_s"] = bubbles / runs;
+  state.counters["bubble_share_%"] = 100.0 * bubbles / fluid;
+  state.counters["bubble_ms/substep"] = 1e3 * bubbles / substeps;
+  state.counters["bubbles"] = made / runs;
+  state.counters["threads"] = oneapi::tbb::info::default_concurrency();
+}
+
+BENCHMARK_CAPTURE(BM_BubbleShare, dam_break, std::string("dam_break"))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK_CAPTURE(BM_BubbleShare, pour_tank, std::string("pour_tank"))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+}  // namespace
