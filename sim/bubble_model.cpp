@@ -136,9 +136,13 @@ void BubbleModel::advanceLiveBubbles(const LiquidState& liquid, double t, double
 
 LiquidState BubbleModel::withTrueDistance(const LiquidState& liquid) {
   const double h = liquid.grid.cellSize;
+  // Depths are read down to the depth-growth test (or the largest radius); above the surface only
+  // the tagging band is read (a particle in the air has no depth to grow, and bubbles are in the
+  // liquid).
   const double read = std::max((settings_.bandCells + settings_.entrainmentDepthCells) * h, settings_.maxRadius());
-  surface_ = SurfaceDistance(liquid.liquidDistance, liquid.solidNodeDistance, liquid.grid,
-                             read + kSurfaceBandMarginCells * h);
+  const double readInAir = settings_.bandCells * h;
+  surface_.rebuild(liquid.liquidDistance, liquid.solidNodeDistance, liquid.grid, read + kSurfaceBandMarginCells * h,
+                   readInAir + kSurfaceBandMarginCells * h);
   return LiquidState{liquid.particlePositions, liquid.particleVelocities, liquid.particleIds, surface_.field(),
                      liquid.velocity,          liquid.solidNodeDistance,  liquid.grid};
 }

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <stdexcept>
-#include <utility>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "sim/cell_interpolation.h"
 
@@ -25,130 +25,230 @@ constexpr int kBucketCells = 4;
 /// at() trusts the grid field where its magnitude is below band − this many cells: the 8 centres
 /// of the interpolant lie within √3 cells of the position, so none of them holds the clamped value.
 constexpr double kFieldMarginCells = 2.0;
+/// Key width of one bucket of the propagation front [cells²]: a few entries per bucket.
+constexpr double kBucketWidthCells2 = 1.0 / 64.0;
+/// `limit` of a surface cell: below every squared distance, so no propagated point replaces its own.
+constexpr double kNeverReplaced = -1.0;
+
+/// A cell's phase for the sign and the surface: air, liquid, or solid (counted as liquid in the
+/// sign, and making no surface).
+enum Phase : std::uint8_t { kAir = 0, kLiquid = 1, kSolid = 2 };
 
 }  // namespace
 
+/// The propagation front: (squared distance, cell) entries popped smallest first, ties by cell
+/// index. A bucket queue: entries are listed by key in buckets of fixed width, and a pop takes the
+/// smallest of the first non-empty bucket. Every entry's key is unique (a cell is pushed again
+/// only when strictly closer), so it pops in the same order as any other exact priority queue.
+class SurfaceDistance::NearestFirst {
+ public:
+  struct Entry {
+    double key;  ///< [m²]
+    Cell cell;
+    bool operator<(const Entry& o) const { return key < o.key || (key == o.key && cell.at < o.cell.at); }
+  };
+  /// @param width  bucket width [m²]; @param largest  largest key expected [m²] (larger ones share
+  ///               the last bucket)
+  NearestFirst(double width, double largest)
+      : scale_(1.0 / width), first_(static_cast<std::size_t>(largest * scale_) + 2, kNone) {}
+  bool empty() const { return size_ == 0; }
+  void push(const Entry& e) {
+    const std::size_t b = std::min(static_cast<std::size_t>(e.key * scale_), first_.size() - 1);
+    pool_.push_back({e, first_[b]});
+    first_[b] = static_cast<std::uint32_t>(pool_.size() - 1);
+    cursor_ = std::min(cursor_, b);
+    ++size_;
+  }
+  Entry pop() {
+    while (first_[cursor_] == kNone) ++cursor_;
+    std::uint32_t* link = &first_[cursor_];  // the link to the smallest entry found so far
+    for (std::uint32_t* at = &pool_[*link].next; *at != kNone; at = &pool_[*at].next)
+      if (pool_[*at].entry < pool_[*link].entry) link = at;
+    const Node& smallest = pool_[*link];
+    *link = smallest.next;
+    --size_;
+    return smallest.entry;
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  struct Node {
+    Entry entry;
+    std::uint32_t next;
+  };
+  double scale_;
+  std::vector<std::uint32_t> first_;  ///< first node of each bucket
+  std::vector<Node> pool_;
+  std::size_t cursor_ = 0, size_ = 0;
+};
+
 SurfaceDistance::SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
-                                 double band)
-    : grid_(grid), band_(band) {
+                                 double band, double airBand) {
+  rebuild(phi, solidNodeDistance, grid, band, airBand);
+}
+
+void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
+                              double band, double airBand) {
+  if (airBand == 0.0) airBand = band;
   if (!(band > 0.0)) throw std::invalid_argument("SurfaceDistance: band must be > 0 (metres)");
+  if (!(airBand > 0.0 && airBand <= band))
+    throw std::invalid_argument("SurfaceDistance: airBand must be in (0, band] (metres)");
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
-  const double h = grid.cellSize;
   const std::size_t sj = static_cast<std::size_t>(ni), sk = static_cast<std::size_t>(ni) * nj;
   const std::size_t n = sk * nk;
-  std::vector<std::uint8_t> solid(n, 0), fixed(n, 0), liquid(n, 0);
-  std::vector<double> distance(n, kUnknown);
-  std::vector<Vec3> closest(n);  ///< the surface point a cell's distance is measured to [m]
-  for (int k = 0; k < nk; ++k)
-    for (int j = 0; j < nj; ++j)
-      for (int i = 0; i < ni; ++i) {
-        float sum = 0.0f;
-        for (int c = 0; c < 8; ++c) sum += solidNodeDistance(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
-        const std::size_t at = k * sk + j * sj + i;
-        solid[at] = sum < 0.0f;
-        liquid[at] = solid[at] || phi(i, j, k) < 0.0f;
+  if (n >= std::numeric_limits<std::uint32_t>::max() || std::max({ni, nj, nk}) > std::numeric_limits<std::int16_t>::max())
+    throw std::invalid_argument("SurfaceDistance: more cells than 32-bit indices (16-bit per axis) address");
+  grid_ = grid;
+  band_ = band;
+  airBand_ = airBand;
+  const double h = grid.cellSize;
+  phase_.resize(n);
+  limit_.resize(n);
+  closest_.resize(n);
+  for (int a = 0; a < 3; ++a) {
+    centres_[a].resize(grid.cells[a]);
+    for (int i = 0; i < grid.cells[a]; ++i) centres_[a][i] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
+  }
+  // 0. Phases. A cell is solid when the sum of its 8 nodal solid distances is negative.
+  tbb::parallel_for(tbb::blocked_range<int>(0, nk), [&](const tbb::blocked_range<int>& r) {
+    for (int k = r.begin(); k < r.end(); ++k)
+      for (int j = 0; j < nj; ++j) {
+        const float* const below = &solidNodeDistance(0, j, k);
+        const float* const above = &solidNodeDistance(0, j + 1, k);
+        const float* const behindBelow = &solidNodeDistance(0, j, k + 1);
+        const float* const behindAbove = &solidNodeDistance(0, j + 1, k + 1);
+        const float* const row = &phi(0, j, k);
+        std::uint8_t* const out = &phase_[k * sk + j * sj];
+        for (int i = 0; i < ni; ++i) {
+          // The 8 nodes in the order (x, then y, then z) of the solver's extendIntoSolids rule.
+          const float sum = below[i] + below[i + 1] + above[i] + above[i + 1] + behindBelow[i] + behindBelow[i + 1] +
+                            behindAbove[i] + behindAbove[i + 1];
+          out[i] = sum < 0.0f ? kSolid : (row[i] < 0.0f ? kLiquid : kAir);
+        }
       }
+  });
+  const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
+  // Cells within the band take their first point when it is within their side's band.
+  const double band2[2] = {airBand * airBand, band * band};  // by isLiquid
+  const double firstLimit[2] = {std::nextafter(band2[0], kUnknown), std::nextafter(band2[1], kUnknown)};
   // 1. Cells next to the surface: the foot of the perpendicular on the plane through the nearest
   //    crossing on each axis (intercepts θ_a·h, directions s_a): normal ∝ (s_a/(θ_a h)), distance
-  //    d = 1/√(Σ 1/(θ_a h)²), foot = centre + d²·(s_a/(θ_a h)).
-  for (int k = 0; k < nk; ++k)
-    for (int j = 0; j < nj; ++j)
-      for (int i = 0; i < ni; ++i) {
-        const std::size_t at = k * sk + j * sj + i;
-        if (solid[at]) continue;
-        const int index[3] = {i, j, k}, count[3] = {ni, nj, nk};
-        const std::size_t stride[3] = {1, sj, sk};
-        const double here = phi(i, j, k);
-        double inverse[3] = {0.0, 0.0, 0.0};  // s_a/(θ_a h) [1/m]
-        bool crossing = false, onSurface = false;
-        for (int a = 0; a < 3; ++a) {
-          double nearest = kUnknown;
-          int side = 0;
-          for (const int step : {-1, 1}) {
-            if (index[a] + step < 0 || index[a] + step >= count[a]) continue;
+  //    d = 1/√(Σ 1/(θ_a h)²), foot = centre + d²·(s_a/(θ_a h)). Each z-plane lists its own, so the
+  //    list is in cell order for any thread count.
+  std::vector<std::vector<SurfaceCell>> surfaceOfPlane(nk);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nk), [&](const tbb::blocked_range<int>& r) {
+    for (int k = r.begin(); k < r.end(); ++k)
+      for (int j = 0; j < nj; ++j)
+        for (int i = 0; i < ni; ++i) {
+          const std::size_t at = k * sk + j * sj + i;
+          limit_[at] = firstLimit[isLiquid(at)];
+          if (phase_[at] == kSolid) continue;
+          const int index[3] = {i, j, k}, count[3] = {ni, nj, nk};
+          const std::size_t stride[3] = {1, sj, sk};
+          // A crossing on an axis: a neighbour of the other phase that is not solid.
+          const auto crossesTo = [&](int a, int step) {
+            if (index[a] + step < 0 || index[a] + step >= count[a]) return false;
             const std::size_t other = step < 0 ? at - stride[a] : at + stride[a];
-            if (solid[other] || liquid[other] == liquid[at]) continue;
-            const double there = phi.data()[other];
-            const double along = h * here / (here - there);  // here and there differ in sign
-            if (along < nearest) nearest = along, side = step;
+            return phase_[other] != kSolid && isLiquid(other) != isLiquid(at);
+          };
+          bool crossing = false;
+          for (int a = 0; a < 3 && !crossing; ++a) crossing = crossesTo(a, -1) || crossesTo(a, 1);
+          if (!crossing) continue;
+          const double here = phi.data()[at];
+          double inverse[3] = {0.0, 0.0, 0.0};  // s_a/(θ_a h) [1/m]
+          bool onSurface = false;
+          for (int a = 0; a < 3; ++a) {
+            double nearest = kUnknown;
+            int side = 0;
+            for (const int step : {-1, 1}) {
+              if (!crossesTo(a, step)) continue;
+              const double there = phi.data()[step < 0 ? at - stride[a] : at + stride[a]];
+              const double along = h * here / (here - there);  // here and there differ in sign
+              if (along < nearest) nearest = along, side = step;
+            }
+            if (nearest == kUnknown) continue;
+            if (nearest <= 0.0) onSurface = true;
+            else inverse[a] = side / nearest;
           }
-          if (nearest == kUnknown) continue;
-          crossing = true;
-          if (nearest <= 0.0) onSurface = true;
-          else inverse[a] = side / nearest;
+          const Vec3 c{centres_[0][i], centres_[1][j], centres_[2][k]};
+          const Cell cell{static_cast<std::uint32_t>(at), static_cast<std::int16_t>(i), static_cast<std::int16_t>(j),
+                          static_cast<std::int16_t>(k)};
+          limit_[at] = kNeverReplaced;
+          if (onSurface) {
+            closest_[at] = c;
+            surfaceOfPlane[k].push_back({cell, 0.0});
+            continue;
+          }
+          const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] + inverse[2] * inverse[2]);
+          for (int a = 0; a < 3; ++a) closest_[at][a] = c[a] + d2 * inverse[a];
+          surfaceOfPlane[k].push_back({cell, std::sqrt(d2)});
         }
-        if (!crossing) continue;
-        const Vec3 centre = grid.cellCentre(i, j, k);
-        fixed[at] = 1;
-        if (onSurface) {
-          distance[at] = 0.0;
-          closest[at] = centre;
-          continue;
-        }
-        const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] + inverse[2] * inverse[2]);
-        distance[at] = std::sqrt(d2);
-        for (int a = 0; a < 3; ++a) closest[at][a] = centre[a] + d2 * inverse[a];
-      }
-  // 2. Every other cell: the nearest surface point among those its 26 neighbours hold, settled in
-  //    order of distance (Dijkstra's order; closest-point propagation, so the distance is
-  //    Euclidean to the point found and no upwind error accumulates with depth). Ties are broken
-  //    by cell index: the result is deterministic.
-  using Entry = std::pair<double, std::size_t>;  // (squared distance, cell)
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> front;
-  std::vector<double> squared(n, kUnknown);
-  for (std::size_t at = 0; at < n; ++at)
-    if (fixed[at]) {
-      squared[at] = distance[at] * distance[at];
-      front.push({squared[at], at});
-    }
+  });
+  std::vector<SurfaceCell> surface;
+  for (const std::vector<SurfaceCell>& plane : surfaceOfPlane) surface.insert(surface.end(), plane.begin(), plane.end());
+  // 2. Every other cell within the band: the nearest surface point among those its 26 neighbours
+  //    hold, settled in order of distance (Dijkstra's order; closest-point propagation, so the
+  //    distance is Euclidean to the point found and no upwind error accumulates with depth).
+  //    Ties are broken by cell index: the result is deterministic. limit_ holds, per cell, the
+  //    squared distance [m²] a new point must be below to replace its own.
+  NearestFirst front(kBucketWidthCells2 * h * h, band * band);
+  for (const SurfaceCell& s : surface) front.push({s.distance * s.distance, s.cell});
   while (!front.empty()) {
-    const auto [d2, at] = front.top();
-    front.pop();
-    if (d2 > squared[at]) continue;  // a stale entry: the cell was reached closer since
-    const int i = static_cast<int>(at % sj), j = static_cast<int>((at / sj) % nj), k = static_cast<int>(at / sk);
-    const Vec3& p = closest[at];
-    for (int dz = -1; dz <= 1; ++dz) {
-      if (k + dz < 0 || k + dz >= nk) continue;
-      for (int dy = -1; dy <= 1; ++dy) {
-        if (j + dy < 0 || j + dy >= nj) continue;
-        for (int dx = -1; dx <= 1; ++dx) {
-          if (i + dx < 0 || i + dx >= ni || (dx | dy | dz) == 0) continue;
-          const std::size_t other = at + dz * static_cast<std::ptrdiff_t>(sk) + dy * static_cast<std::ptrdiff_t>(sj) + dx;
-          if (fixed[other]) continue;
-          const Vec3 c = grid.cellCentre(i + dx, j + dy, k + dz);
-          const double e2 = (c[0] - p[0]) * (c[0] - p[0]) + (c[1] - p[1]) * (c[1] - p[1]) + (c[2] - p[2]) * (c[2] - p[2]);
-          if (e2 < squared[other] && e2 <= band * band) {
-            squared[other] = e2;
-            closest[other] = p;
-            front.push({e2, other});
-          }
+    const auto [key, cell] = front.pop();
+    if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at]) continue;  // reached closer since
+    const Vec3 p = closest_[cell.at];
+    // Squared distance from p to the 26 neighbours' centres: per axis first, summed in the order
+    // x, y, z of the formula (x² + y²) + z², so each is rounded as written out in full.
+    const int lo[3] = {cell.i > 0 ? -1 : 0, cell.j > 0 ? -1 : 0, cell.k > 0 ? -1 : 0};
+    const int hi[3] = {cell.i < ni - 1 ? 1 : 0, cell.j < nj - 1 ? 1 : 0, cell.k < nk - 1 ? 1 : 0};
+    const int index[3] = {cell.i, cell.j, cell.k};
+    double axis[3][3];
+    for (int a = 0; a < 3; ++a)
+      for (int d = lo[a]; d <= hi[a]; ++d) {
+        const double e = centres_[a][index[a] + d] - p[a];
+        axis[a][d + 1] = e * e;
+      }
+    for (int dz = lo[2]; dz <= hi[2]; ++dz)
+      for (int dy = lo[1]; dy <= hi[1]; ++dy) {
+        const std::size_t row = cell.at + static_cast<std::ptrdiff_t>(dz) * sk + static_cast<std::ptrdiff_t>(dy) * sj;
+        for (int dx = lo[0]; dx <= hi[0]; ++dx) {
+          const std::size_t other = row + dx;
+          const double e2 = (axis[0][dx + 1] + axis[1][dy + 1]) + axis[2][dz + 1];
+          if (!(e2 < limit_[other])) continue;
+          limit_[other] = e2;
+          closest_[other] = p;
+          front.push({e2, {static_cast<std::uint32_t>(other), static_cast<std::int16_t>(cell.i + dx),
+                           static_cast<std::int16_t>(cell.j + dy), static_cast<std::int16_t>(cell.k + dz)}});
         }
       }
-    }
   }
-  for (std::size_t at = 0; at < n; ++at)
-    if (!fixed[at] && squared[at] != kUnknown) distance[at] = std::sqrt(squared[at]);
-  // 3. The sign of the phase; cells beyond the band hold ±band.
+  // 3. The sign of the phase; cells beyond the band hold ±band (the band of their side).
   field_ = Array3f(grid.cells);
   float* const out = field_.data();
-  for (std::size_t at = 0; at < n; ++at) {
-    const double magnitude = std::min(distance[at], band);
-    out[at] = static_cast<float>(liquid[at] ? -magnitude : magnitude);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t at = r.begin(); at < r.end(); ++at) {
+      const double side = isLiquid(at) ? band : airBand;
+      const double squared = limit_[at];
+      const double magnitude = squared == kNeverReplaced ? kUnknown : (squared <= band2[isLiquid(at)] ? std::sqrt(squared) : side);
+      out[at] = static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
+    }
+  });
+  for (const SurfaceCell& s : surface) {  // surface cells: the distance to their own point
+    const double magnitude = std::min(s.distance, isLiquid(s.cell.at) ? band : airBand);
+    out[s.cell.at] = static_cast<float>(isLiquid(s.cell.at) ? -magnitude : magnitude);
   }
   // 4. The surface points, grouped by bucket (in cell order within a bucket) for at().
   for (int a = 0; a < 3; ++a) buckets_[a] = (grid.cells[a] + kBucketCells - 1) / kBucketCells;
-  const auto bucketOf = [&](std::size_t at) {
-    const int i = static_cast<int>(at % sj), j = static_cast<int>((at / sj) % nj), k = static_cast<int>(at / sk);
-    return (static_cast<std::size_t>(k / kBucketCells) * buckets_[1] + j / kBucketCells) * buckets_[0] + i / kBucketCells;
+  const auto bucketOf = [&](const Cell& c) {
+    return (static_cast<std::size_t>(c.k / kBucketCells) * buckets_[1] + c.j / kBucketCells) * buckets_[0] +
+           c.i / kBucketCells;
   };
   bucketStart_.assign(static_cast<std::size_t>(buckets_[0]) * buckets_[1] * buckets_[2] + 1, 0);
-  for (std::size_t at = 0; at < n; ++at)
-    if (fixed[at]) ++bucketStart_[bucketOf(at) + 1];
+  for (const SurfaceCell& s : surface) ++bucketStart_[bucketOf(s.cell) + 1];
   for (std::size_t b = 1; b < bucketStart_.size(); ++b) bucketStart_[b] += bucketStart_[b - 1];
   points_.resize(bucketStart_.back());
   std::vector<std::size_t> next(bucketStart_.begin(), bucketStart_.end() - 1);
-  for (std::size_t at = 0; at < n; ++at)
-    if (fixed[at]) points_[next[bucketOf(at)]++] = closest[at];
+  for (const SurfaceCell& s : surface) points_[next[bucketOf(s.cell)]++] = closest_[s.cell.at];
 }
 
 double SurfaceDistance::nearestSurfacePoint(const Vec3& p) const {
@@ -186,7 +286,7 @@ double SurfaceDistance::nearestSurfacePoint(const Vec3& p) const {
 
 double SurfaceDistance::at(const Vec3& position) const {
   const double value = interpolateCellCentres(field_, grid_, position);
-  if (std::abs(value) < band_ - kFieldMarginCells * grid_.cellSize) return value;
+  if (std::abs(value) < (value < 0.0 ? band_ : airBand_) - kFieldMarginCells * grid_.cellSize) return value;
   const double h = grid_.cellSize;
   const double far = h * std::sqrt(static_cast<double>(grid_.cells[0]) * grid_.cells[0] +
                                    static_cast<double>(grid_.cells[1]) * grid_.cells[1] +

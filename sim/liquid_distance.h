@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "sim/array3.h"
@@ -35,11 +36,22 @@ class SurfaceDistance {
   ///                           its values at the cells next to the surface are read
   /// @param solidNodeDistance  solid signed distance at the nodes [m]
   /// @param band               [m], > 0: how far from the surface the grid field is computed
-  SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid, double band);
+  ///                           (on the liquid side)
+  /// @param airBand            [m], in (0, band]: the same on the air side; 0 for `band`
+  /// @throws std::invalid_argument for a band ≤ 0 or an airBand outside (0, band]
+  SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid, double band,
+                  double airBand = 0.0);
 
-  /// Signed distance at cell centres [m], exact to the surface points within band, ±band beyond.
+  /// @brief As the constructor, reusing this object's memory (the bubble model rebuilds the
+  ///        distance on every substep).
+  void rebuild(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid, double band,
+               double airBand = 0.0);
+
+  /// Signed distance at cell centres [m], exact to the surface points within the band of its side,
+  /// −band or +airBand beyond.
   const Array3f& field() const { return field_; }
   double band() const { return band_; }
+  double airBand() const { return airBand_; }
   /// The surface points [m] (one per cell next to the surface).
   const std::vector<Vec3>& surfacePoints() const { return points_; }
 
@@ -51,13 +63,29 @@ class SurfaceDistance {
  private:
   /// Distance [m] from p to the nearest surface point, by rings of buckets around p's bucket.
   double nearestSurfacePoint(const Vec3& p) const;
+  /// A cell: its linear index and its indices per axis.
+  struct Cell {
+    std::uint32_t at;
+    std::int16_t i, j, k;
+  };
+  /// A cell next to the surface and the distance [m] to its surface point.
+  struct SurfaceCell {
+    Cell cell;
+    double distance;
+  };
+  class NearestFirst;
 
   GridGeometry grid_;
-  double band_ = 0.0;
+  double band_ = 0.0, airBand_ = 0.0;
   Array3f field_;
   std::vector<Vec3> points_;               ///< surface points, grouped by bucket
   Index3 buckets_{0, 0, 0};                ///< bucket counts per axis
   std::vector<std::size_t> bucketStart_;   ///< points of bucket b: [start[b], start[b + 1])
+  // Per-cell work arrays of rebuild, kept between rebuilds.
+  std::vector<std::uint8_t> phase_;
+  std::vector<double> limit_;              ///< squared distance a new point must be below [m²]
+  std::vector<Vec3> closest_;              ///< the surface point a cell's distance is measured to [m]
+  std::vector<double> centres_[3];         ///< cell-centre coordinate per index, per axis [m]
 };
 
 }  // namespace fluidsound::sim

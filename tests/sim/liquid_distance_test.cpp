@@ -175,6 +175,29 @@ TEST(LiquidDistance, BeyondTheBandTheNearestSurfacePointGivesTheDepth) {
   EXPECT_LT(worstSphere, 0.5 * kCell);
 }
 
+TEST(LiquidDistance, ANarrowerAirBandClampsOnlyTheAirSide) {
+  // Claim: an air band narrower than the liquid band (the bubble model reads only the tagging band
+  // above the surface) leaves every value within it unchanged — the liquid side, and the air side
+  // up to airBand — and holds +airBand beyond; rebuilding an object gives what a new one gives.
+  // Reference: the same field with both bands equal, for a sphere of liquid (curved, so points
+  // reach cells along oblique paths). Tolerance: exact (the same propagation, cut further out).
+  const GridGeometry g = cube();
+  const Vec3 c{0.08, 0.08, 0.08};
+  const auto sphere = [&](const Vec3& x) { return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 10 * kCell; };
+  const Array3f phi = indicator(g, sphere);
+  const double band = 6 * kCell, airBand = 3 * kCell;
+  const Array3f both = SurfaceDistance(phi, openNodes(g), g, band).field();
+  SurfaceDistance narrow(indicator(g, [](const Vec3&) { return 1.0; }), openNodes(g), g, band);
+  narrow.rebuild(phi, openNodes(g), g, band, airBand);
+  int compared = 0;
+  for (std::size_t at = 0; at < both.elementCount(); ++at) {
+    const float expected = both.data()[at] < airBand ? both.data()[at] : static_cast<float>(airBand);
+    ASSERT_EQ(narrow.field().data()[at], expected) << "cell " << at;
+    compared += both.data()[at] < 0.0f;
+  }
+  EXPECT_GT(compared, 1000);
+}
+
 TEST(LiquidDistance, NoSurfaceGivesTheBandOnTheGridAndTheDiagonalAnywhere) {
   // Claim: a grid all liquid (or all air) has no surface: the field is ∓band everywhere and at()
   // returns ∓ the grid's diagonal.
