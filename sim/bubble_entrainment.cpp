@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 #include "sim/cell_interpolation.h"
 #include "sim/particle_transfer.h"
 #include "sim/random_stream.h"
+#include "sim/velocity_range.h"
 
 namespace fluidsound::sim {
 
@@ -21,23 +23,59 @@ constexpr std::size_t kBlockParticles = 4096;
 /// Filter bits per record: a deep particle passes the filter (and pays a binary search) with
 /// probability ≈ 1/kFilterBitsPerTag.
 constexpr std::size_t kFilterBitsPerTag = 16;
+/// Ids below kDenseIdsPerTag × records + kDenseIdsAlways get a slot each (4 bytes per id): the
+/// solver numbers particles 0, 1, 2, … so its ids stay within a few times the particle count, and
+/// a seeded tank's first records are a small fraction of its particles.
+constexpr std::uint64_t kDenseIdsPerTag = 64;
+constexpr std::uint64_t kDenseIdsAlways = std::uint64_t{1} << 20;
 /// Below this |∇φ| [-] (φ is a distance, |∇φ| ≈ 1 near the surface) the normal is undefined: the
 /// particle sits where φ is flat (e.g. the solver's constant far value), and the speed test is skipped.
 constexpr double kMinimumDistanceGradient = 0.1;
 
-/// The trilinear interpolant at x mixes the 8 centres around x, which include x's own cell centre
-/// and lie within √3 cells of it; a distance field changes by at most its distance, so
-/// |φ(x) − φ(own centre)| ≤ √3 h: a cheap test that leaves most particles out.
-constexpr double kStencilReachCells = 1.7320508075688772;
+/// Relative margin of the "beyond the band" stencil test: far above the rounding of a trilinear
+/// interpolation (a few ulp), far below any distance that matters.
+constexpr double kBeyondBandMargin = 1e-9;
+
+/// A speed test is skipped when the bound on the relative speed (velocity_range.h) is below the
+/// threshold by this relative margin: the bound and the test round differently, by a few ulp.
+constexpr double kSpeedBoundMargin = 1e-6;
 
 std::uint64_t filterSlot(std::uint64_t id) { return cellStream(0, id); }
 
-/// φ at the centre of the cell holding x (indices clamped to the grid).
-float ownCellValue(const Array3f& phi, const GridGeometry& grid, const Vec3& x) {
+/// Per cell c, whether all 8 centres of the interpolation stencil based at c (cell_interpolation.h:
+/// c and c + 1 per axis, clamped to the grid) hold φ beyond ±band on one side, so that φ anywhere
+/// in that stencil is beyond the band: the particle there needs no interpolation. Computed per
+/// axis in turn.
+std::vector<std::uint8_t> beyondBandStencils(const Array3f& phi, double band) {
+  const int ni = phi.ni(), nj = phi.nj(), nk = phi.nk();
+  const std::size_t sj = static_cast<std::size_t>(ni), sk = sj * nj, n = sk * nk;
+  // The side of each centre: 1 above +band, 2 below −band, 0 inside the band (with a relative
+  // margin, so that interpolation rounding cannot bring a value back inside).
+  const double beyond = band * (1.0 + kBeyondBandMargin);
+  std::vector<std::uint8_t> side(n);
+  for (std::size_t at = 0; at < n; ++at)
+    side[at] = phi.data()[at] > beyond ? 1 : (phi.data()[at] < -beyond ? 2 : 0);
+  const std::size_t stride[3] = {1, sj, sk};
+  const int count[3] = {ni, nj, nk};
+  for (int a = 0; a < 3; ++a) {
+    for (std::size_t at = 0; at < n; ++at) {
+      const int index = static_cast<int>((at / stride[a]) % count[a]);
+      if (index + 1 < count[a] && side[at + stride[a]] != side[at]) side[at] = 0;
+    }
+  }
+  return side;
+}
+
+/// The base cell of the interpolation stencil at x (as interpolateCellCentres places it).
+std::size_t stencilBase(const GridGeometry& grid, const Vec3& x) {
   const Vec3 g = grid.gridFromWorld(x);
-  int c[3];
-  for (int a = 0; a < 3; ++a) c[a] = std::clamp(static_cast<int>(std::floor(g[a])), 0, grid.cells[a] - 1);
-  return phi(c[0], c[1], c[2]);
+  std::size_t at = 0;
+  for (int a = 2; a >= 0; --a) {
+    const double top = static_cast<double>(grid.cells[a] - 1);
+    const double c = std::clamp(g[a] - 0.5, 0.0, top);
+    at = at * grid.cells[a] + std::min(static_cast<int>(c), std::max(grid.cells[a] - 2, 0));
+  }
+  return at;
 }
 
 /// The records and seeds one block of particles produced.
@@ -66,16 +104,37 @@ double relativeSpeedIntoLiquid(const LiquidState& liquid, const Vec3& x, const V
 }  // namespace
 
 EntrainmentTagTable::EntrainmentTagTable(std::vector<EntrainmentTag> tags) : tags_(std::move(tags)) {
+  if (tags_.empty()) return;
+  const auto duplicate = [](std::uint64_t id) {
+    std::ostringstream message;
+    message << "LiquidState.particleIds must be unique, but id " << id << " belongs to two particles";
+    throw std::invalid_argument(message.str());
+  };
+  std::uint64_t largest = 0;
+  for (const EntrainmentTag& t : tags_) largest = std::max(largest, t.particleId);
+  if (largest < kDenseIdsPerTag * tags_.size() + kDenseIdsAlways) {
+    // Ids as the solver numbers them (0, 1, 2, … in order of creation): a slot per id, which also
+    // puts the records in id order without a comparison sort.
+    slotOfId_.assign(largest + 1, kNoSlot);
+    for (std::size_t r = 0; r < tags_.size(); ++r) {
+      std::uint32_t& slot = slotOfId_[tags_[r].particleId];
+      if (slot != kNoSlot) duplicate(tags_[r].particleId);
+      slot = static_cast<std::uint32_t>(r);
+    }
+    std::vector<EntrainmentTag> sorted;
+    sorted.reserve(tags_.size());
+    for (std::uint32_t& slot : slotOfId_)
+      if (slot != kNoSlot) {
+        sorted.push_back(tags_[slot]);
+        slot = static_cast<std::uint32_t>(sorted.size() - 1);
+      }
+    tags_ = std::move(sorted);
+    return;
+  }
   std::sort(tags_.begin(), tags_.end(),
             [](const EntrainmentTag& a, const EntrainmentTag& b) { return a.particleId < b.particleId; });
   for (std::size_t i = 1; i < tags_.size(); ++i)
-    if (tags_[i].particleId == tags_[i - 1].particleId) {
-      std::ostringstream message;
-      message << "LiquidState.particleIds must be unique, but id " << tags_[i].particleId
-              << " belongs to two particles";
-      throw std::invalid_argument(message.str());
-    }
-  if (tags_.empty()) return;
+    if (tags_[i].particleId == tags_[i - 1].particleId) duplicate(tags_[i].particleId);
   const std::uint64_t bits = std::bit_ceil(std::max<std::uint64_t>(64, kFilterBitsPerTag * tags_.size()));
   mask_ = bits - 1;
   filter_.assign(bits / 64, 0);
@@ -86,6 +145,10 @@ EntrainmentTagTable::EntrainmentTagTable(std::vector<EntrainmentTag> tags) : tag
 }
 
 const EntrainmentTag* EntrainmentTagTable::find(std::uint64_t id) const {
+  if (!slotOfId_.empty()) {
+    if (id >= slotOfId_.size() || slotOfId_[id] == kNoSlot) return nullptr;
+    return &tags_[slotOfId_[id]];
+  }
   if (tags_.empty()) return nullptr;
   const std::uint64_t slot = filterSlot(id) & mask_;
   if (!((filter_[slot >> 6] >> (slot & 63)) & 1)) return nullptr;
@@ -99,10 +162,15 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   validateLiquidState(liquid);
   const double h = liquid.grid.cellSize;
   const double band = settings.bandCells * h;
-  const double quickBand = band + kStencilReachCells * h;
   const double growth = settings.entrainmentDepthCells * h;
   const double probe = settings.probeCells * h;
   const bool speedTest = std::isfinite(settings.entrainmentSpeed);
+  // Where the liquid's velocity around a particle stays within entrainmentSpeed of the particle's
+  // own, no probe can pass the speed test: it is skipped unread (the same decisions, faster).
+  std::optional<VelocityRange> range;
+  if (speedTest && settings.probeCells <= VelocityRange::reachCells()) range.emplace(liquid.velocity, liquid.grid);
+  const double boundBelow = settings.entrainmentSpeed * (1.0 - kSpeedBoundMargin);
+  const std::vector<std::uint8_t> beyondBand = beyondBandStencils(liquid.liquidDistance, band);
   const std::size_t n = liquid.particlePositions.size();
   std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
   forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
@@ -111,9 +179,9 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
       const Vec3f& xf = liquid.particlePositions[p];
       const Vec3 x{xf[0], xf[1], xf[2]};
       const EntrainmentTag* old = previous.find(liquid.particleIds[p]);
-      // Deep or far, and no record: nothing to do (almost every particle), decided without the
+      // Deep or far, and no record: nothing to do (most particles), decided without the
       // interpolation.
-      if (!old && std::abs(ownCellValue(liquid.liquidDistance, liquid.grid, x)) > quickBand) continue;
+      if (!old && beyondBand[stencilBase(liquid.grid, x)]) continue;
       const double phi = interpolateCellCentres(liquid.liquidDistance, liquid.grid, x);
       const bool inBand = std::abs(phi) <= band;
       if (!old && !inBand) continue;
@@ -125,7 +193,9 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
         bool entrains = windowOpen && depth - tag.windowDepth >= growth;
         if (!entrains && inBand && speedTest) {
           const Vec3f& vf = liquid.particleVelocities[p];
-          entrains = relativeSpeedIntoLiquid(liquid, x, {vf[0], vf[1], vf[2]}, probe) >= settings.entrainmentSpeed;
+          const Vec3 v{vf[0], vf[1], vf[2]};
+          entrains = !(range && range->maxDifference(x, v) < boundBelow) &&
+                     relativeSpeedIntoLiquid(liquid, x, v, probe) >= settings.entrainmentSpeed;
         }
         if (entrains) {
           tag.seedBirth = time;

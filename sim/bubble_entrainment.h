@@ -26,8 +26,9 @@ struct EntrainmentTag {
   bool operator==(const EntrainmentTag&) const = default;
 };
 
-/// The records of one step, sorted by particle id, with a one-bit-per-slot hash filter in front
-/// of the binary search: nearly every particle is deep and has no record, and the filter answers
+/// The records of one step, sorted by particle id. Ids as the solver numbers them (dense from 0)
+/// are looked up in a table of one slot per id; other ids by binary search behind a
+/// one-bit-per-slot hash filter: nearly every particle is deep and has no record, and both answer
 /// "no" for it with one memory read.
 class EntrainmentTagTable {
  public:
@@ -41,8 +42,10 @@ class EntrainmentTagTable {
   std::size_t size() const { return tags_.size(); }
 
  private:
+  static constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
   std::vector<EntrainmentTag> tags_;  ///< sorted by particleId
-  std::vector<std::uint64_t> filter_; ///< bit (mix(id) & mask) set for every record
+  std::vector<std::uint32_t> slotOfId_;  ///< dense ids: the index of id's record in tags_, or kNoSlot
+  std::vector<std::uint64_t> filter_; ///< other ids: bit (mix(id) & mask) set for every record
   std::uint64_t mask_ = 0;
 };
 
@@ -70,8 +73,10 @@ struct EntrainmentStep {
 ///          entrainmentWindow) and d − windowDepth ≥ entrainmentDepthCells·h, or if |φ| ≤ band and
 ///          (v_p − u(x − n·probeCells·h))·(−n) ≥ entrainmentSpeed, n = ∇φ/|∇φ|;
 ///        - otherwise a closed window reopens at (time, d) if |φ| ≤ band, or the record is dropped.
-/// @param liquid    its liquidDistance must be a true signed distance (1-Lipschitz): particles
-///                  whose own cell centre is further than the band plus √3 h are skipped unread
+/// @param liquid    its liquidDistance is read as a true signed distance. Two shortcuts leave the
+///                  decisions unchanged: a particle without a record whose interpolation stencil
+///                  lies wholly beyond ±band is skipped unread, and a speed test that the range of
+///                  the grid velocity around the particle cannot pass (velocity_range.h) is not run
 /// @param previous  the tags returned by the previous step (empty at the start)
 /// @note Bit-identical for any thread count and any order of the particle arrays: particles are
 ///       processed in fixed blocks and records and seeds are sorted by particle id.

@@ -132,6 +132,25 @@ TEST(BubbleEntrainment, ResultDoesNotDependOnTheOrderOfTheParticleArrays) {
   EXPECT_TRUE(a.seeds == b.seeds);
 }
 
+TEST(BubbleEntrainment, RecordsAreFoundWhateverTheIds) {
+  // Claim: the record table finds every record and nothing else, sorted by id, both for ids as
+  // the solver numbers them (dense from 0: a slot per id) and for ids far apart (binary search
+  // behind a filter). Reference: the ids put in. Tolerance: exact.
+  for (const std::uint64_t offset : {std::uint64_t{0}, std::uint64_t{1} << 40}) {
+    std::vector<EntrainmentTag> tags;
+    for (const std::uint64_t id : {17u, 3u, 900u, 4u}) tags.push_back({offset + id, 0.5, 0.001 * id, kNever});
+    const EntrainmentTagTable table(tags);
+    ASSERT_EQ(table.size(), 4u);
+    EXPECT_TRUE(std::ranges::is_sorted(table.tags(), {}, &EntrainmentTag::particleId));
+    for (const EntrainmentTag& t : tags) {
+      const EntrainmentTag* found = table.find(t.particleId);
+      ASSERT_NE(found, nullptr) << t.particleId;
+      EXPECT_EQ(*found, t);
+    }
+    for (const std::uint64_t id : {0u, 5u, 18u, 899u, 901u, 100000u}) EXPECT_EQ(table.find(offset + id), nullptr) << id;
+  }
+}
+
 TEST(BubbleEntrainment, DuplicateParticleIdsAreRefused) {
   // Claim: two tagged particles with one id (a solver bug that would merge their records) fail
   // with std::invalid_argument naming particleIds.
