@@ -55,14 +55,17 @@ std::vector<std::uint8_t> beyondBandStencils(const Array3f& phi, double band) {
   std::vector<std::uint8_t> side(n);
   for (std::size_t at = 0; at < n; ++at)
     side[at] = phi.data()[at] > beyond ? 1 : (phi.data()[at] < -beyond ? 2 : 0);
-  const std::size_t stride[3] = {1, sj, sk};
-  const int count[3] = {ni, nj, nk};
-  for (int a = 0; a < 3; ++a) {
-    for (std::size_t at = 0; at < n; ++at) {
-      const int index = static_cast<int>((at / stride[a]) % count[a]);
-      if (index + 1 < count[a] && side[at + stride[a]] != side[at]) side[at] = 0;
-    }
-  }
+  // Along x, then y, then z: a cell keeps its side if the next cell along the axis (when there is
+  // one) has the same; after three passes, if all 8 corners of its stencil have.
+  const auto keepIfSame = [&](std::size_t at, std::size_t next) { side[at] = side[next] == side[at] ? side[at] : 0; };
+  for (int k = 0; k < nk; ++k)
+    for (int j = 0; j < nj; ++j)
+      for (int i = 0; i + 1 < ni; ++i) keepIfSame(k * sk + j * sj + i, k * sk + j * sj + i + 1);
+  for (int k = 0; k < nk; ++k)
+    for (int j = 0; j + 1 < nj; ++j)
+      for (int i = 0; i < ni; ++i) keepIfSame(k * sk + j * sj + i, k * sk + (j + 1) * sj + i);
+  for (int k = 0; k + 1 < nk; ++k)
+    for (std::size_t at = k * sk; at < (k + 1) * sk; ++at) keepIfSame(at, at + sk);
   return side;
 }
 

@@ -26,7 +26,7 @@ constexpr int kBucketCells = 4;
 /// of the interpolant lie within √3 cells of the position, so none of them holds the clamped value.
 constexpr double kFieldMarginCells = 2.0;
 /// Key width of one bucket of the propagation front [cells²]: a few entries per bucket.
-constexpr double kBucketWidthCells2 = 1.0 / 64.0;
+constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
 /// `limit` of a surface cell: below every squared distance, so no propagated point replaces its own.
 constexpr double kNeverReplaced = -1.0;
 
@@ -151,8 +151,13 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             const std::size_t other = step < 0 ? at - stride[a] : at + stride[a];
             return phase_[other] != kSolid && isLiquid(other) != isLiquid(at);
           };
-          bool crossing = false;
-          for (int a = 0; a < 3 && !crossing; ++a) crossing = crossesTo(a, -1) || crossesTo(a, 1);
+          // Most cells are not next to the surface: first a test without branches on the six
+          // neighbours (a neighbour outside the grid reads as solid, which makes no crossing).
+          const std::uint8_t other = phase_[at] == kAir ? kLiquid : kAir;
+          const auto phaseAt = [&](bool inside, std::size_t o) { return inside ? phase_[o] : std::uint8_t{kSolid}; };
+          const bool crossing = (phaseAt(i > 0, at - 1) == other) | (phaseAt(i + 1 < ni, at + 1) == other) |
+                                (phaseAt(j > 0, at - sj) == other) | (phaseAt(j + 1 < nj, at + sj) == other) |
+                                (phaseAt(k > 0, at - sk) == other) | (phaseAt(k + 1 < nk, at + sk) == other);
           if (!crossing) continue;
           const double here = phi.data()[at];
           double inverse[3] = {0.0, 0.0, 0.0};  // s_a/(θ_a h) [1/m]
@@ -214,7 +219,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         for (int dx = lo[0]; dx <= hi[0]; ++dx) {
           const std::size_t other = row + dx;
           const double e2 = (axis[0][dx + 1] + axis[1][dy + 1]) + axis[2][dz + 1];
-          if (!(e2 < limit_[other])) continue;
+          if (!(e2 < limit_[other])) continue;  // also the cell itself: its own point, e2 = limit
           limit_[other] = e2;
           closest_[other] = p;
           front.push({e2, {static_cast<std::uint32_t>(other), static_cast<std::int16_t>(cell.i + dx),

@@ -32,10 +32,12 @@ VelocityRange::VelocityRange(const MacVelocity& velocity, const GridGeometry& gr
       for (int j = 0; j < u.nj(); ++j) {
         const float* const row = &u(0, j, k);
         const std::size_t b0 = blockIndex(0, std::min(j / kBlockCells, bj - 1), std::min(k / kBlockCells, bk - 1));
-        for (int i = 0; i < u.ni(); ++i) {
-          const std::size_t b = b0 + std::min(i / kBlockCells, bi - 1);
-          lo[b] = std::min(lo[b], row[i]);
-          hi[b] = std::max(hi[b], row[i]);
+        for (int first = 0; first < u.ni(); first += kBlockCells) {
+          const std::size_t b = b0 + std::min(first / kBlockCells, bi - 1);
+          float rowLo = lo[b], rowHi = hi[b];
+          for (int i = first; i < std::min(first + kBlockCells, u.ni()); ++i)
+            rowLo = std::min(rowLo, row[i]), rowHi = std::max(rowHi, row[i]);
+          lo[b] = rowLo, hi[b] = rowHi;
         }
       }
     // Widened by kSpanBlocks blocks along each axis in turn, one block at a time.
