@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_signals.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -28,13 +30,7 @@ double integratedPower(const PowerSpectrum& s) {
   return sum;
 }
 
-std::vector<float> gaussianNoise(std::size_t n, std::uint32_t seed) {
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<float> x(n);
-  for (float& v : x) v = static_cast<float>(normal(generator));
-  return x;
-}
+using test::gaussianNoise;
 
 // Claim: Σ_k P_k Δf equals the record's mean power (1/L) Σ x² — Parseval's theorem with the
 // quarter-hop Hann overlap, whose squared windows sum to 3/2 at every sample (power_spectrum.h).

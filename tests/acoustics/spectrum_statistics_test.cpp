@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_signals.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -36,13 +38,7 @@ std::vector<float> tones(const std::vector<std::pair<double, double>>& frequency
   return x;
 }
 
-std::vector<float> gaussianNoise(std::size_t n, std::uint32_t seed) {
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<float> x(n);
-  for (float& v : x) v = static_cast<float>(normal(generator));
-  return x;
-}
+using test::gaussianNoise;
 
 // Claim: a pure tone's centroid is its frequency. Reference: f = 1234.5 Hz (between bins). The
 // sampled first moment of a window's power response |W|² is exact at any offset (its transform,
