@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 
@@ -50,37 +51,51 @@ double expectedDensity(const Array3f& phi, const Array3f& sceneSolidNodes, doubl
 }
 }  // namespace
 
+namespace {
+/// The trilinear (tent) weight along one axis of a particle at x for the centre c of cell `cell`
+/// of `cells` [-]. A particle between the first (last) centre and the grid boundary gives it the
+/// weight the missing centre beyond would get, so a uniform liquid against a wall reads 1 there
+/// too (else 7/8 per wall, and the thin-out correction would pull particles into walls and
+/// corners).
+double tentWeight(double x, double c, int cell, int cells, double h) {
+  const bool folded = (cell == 0 && x < c) || (cell == cells - 1 && x > c);
+  return folded ? 1.0 : std::max(0.0, 1.0 - std::abs(x - c) / h);
+}
+}  // namespace
+
 Array3f relativeParticleDensity(const Particles& particles, const CellIndex& index, const GridGeometry& grid,
                                 int perCell) {
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const double h = grid.cellSize;
   Array3f density(grid.cells, 0.0f);
+  // One slab of centres (fixed k) per task; the particles of the cells around it are visited
+  // cell by cell in sorted order and add their weight to the 3 × 3 centres around their cell.
+  // Each centre thus sums its particles in sorted order, the order a per-centre gather would
+  // use, on any thread count.
   tbb::parallel_for(0, nk, [&](int k) {
-    for (int j = 0; j < nj; ++j)
-      for (int i = 0; i < ni; ++i) {
-        const Vec3 centre = grid.cellCentre(i, j, k);
-        const int cell[3] = {i, j, k};
-        double sum = 0.0;
-        for (int ck = std::max(k - 1, 0); ck <= std::min(k + 1, nk - 1); ++ck)
-          for (int cj = std::max(j - 1, 0); cj <= std::min(j + 1, nj - 1); ++cj) {
-            const std::size_t row = (static_cast<std::size_t>(ck) * nj + cj) * ni;
-            const std::size_t end = index.start[row + std::min(i + 1, ni - 1) + 1];
-            for (std::size_t p = index.start[row + std::max(i - 1, 0)]; p < end; ++p) {
-              double w = 1.0;
-              for (int a = 0; a < 3; ++a) {
-                const double x = particles.position[p][a];
-                // A particle between the first (last) centre and the grid boundary gives it the
-                // weight the missing centre beyond would get, so a uniform liquid against a
-                // wall reads 1 there too (else 7/8 per wall, and the thin-out correction would
-                // pull particles into walls and corners).
-                const bool folded = (cell[a] == 0 && x < centre[a]) || (cell[a] == grid.cells[a] - 1 && x > centre[a]);
-                w *= folded ? 1.0 : std::max(0.0, 1.0 - std::abs(x - centre[a]) / h);
+    std::vector<double> sum(static_cast<std::size_t>(ni) * nj, 0.0);
+    const double cz = grid.cellCentre(0, 0, k)[2];
+    for (int ck = std::max(k - 1, 0); ck <= std::min(k + 1, nk - 1); ++ck)
+      for (int cj = 0; cj < nj; ++cj)
+        for (int ci = 0; ci < ni; ++ci) {
+          const std::size_t cell = (static_cast<std::size_t>(ck) * nj + cj) * ni + ci;
+          for (std::size_t p = index.start[cell]; p < index.start[cell + 1]; ++p) {
+            const Vec3f& x = particles.position[p];
+            const double wz = tentWeight(x[2], cz, k, nk, h);
+            if (wz == 0.0) continue;
+            for (int j = std::max(cj - 1, 0); j <= std::min(cj + 1, nj - 1); ++j) {
+              const double wy = tentWeight(x[1], grid.cellCentre(0, j, 0)[1], j, nj, h);
+              if (wy == 0.0) continue;
+              for (int i = std::max(ci - 1, 0); i <= std::min(ci + 1, ni - 1); ++i) {
+                const double wx = tentWeight(x[0], grid.cellCentre(i, 0, 0)[0], i, ni, h);
+                sum[static_cast<std::size_t>(j) * ni + i] += wx * wy * wz;
               }
-              sum += w;
             }
           }
-        density(i, j, k) = static_cast<float>(sum / perCell);
-      }
+        }
+    for (int j = 0; j < nj; ++j)
+      for (int i = 0; i < ni; ++i)
+        density(i, j, k) = static_cast<float>(sum[static_cast<std::size_t>(j) * ni + i] / perCell);
   });
   return density;
 }
