@@ -132,38 +132,47 @@ void PressureSolver::updateVelocity(MacVelocity& velocity, const Array3f& liquid
                                     const std::array<Array3f, 3>& solidVelocity,
                                     const GridGeometry& grid, double density, double dt) {
   const double gradientScale = dt / (density * grid.cellSize);  // Δt/(ρh)
+  const int ni = grid.cells[0], nj = grid.cells[1];
+  const float* const phi = liquidPhi.values().data();
+  const double* const pressure = pressure_.values().data();
   for (int a = 0; a < 3; ++a) {
     const Index3 n = grid.faceCount(a);
     valid_[a] = Array3<std::uint8_t>(n, 0);
+    // Face (i, j, k) of axis a lies between cell (i, j, k) (+) and the cell one step down a (−);
+    // either may be outside the grid. Flat cell indices: (k·nj + j)·ni + i.
+    const std::ptrdiff_t stride = a == 0 ? 1 : a == 1 ? ni : static_cast<std::ptrdiff_t>(ni) * nj;
     // Each face is written by the slab that holds it only: the same result on any thread count.
-    tbb::parallel_for(0, n[2], [&](int k) {
-      for (int j = 0; j < n[1]; ++j)
+    tbb::parallel_for(0, n[2], [&, a, n, stride](int k) {
+      for (int j = 0; j < n[1]; ++j) {
+        float* const u = &velocity[a](0, j, k);
+        const float* const open = &faceOpen[a](0, j, k);
+        const float* const wallVelocity = &solidVelocity[a](0, j, k);
+        std::uint8_t* const valid = &valid_[a](0, j, k);
+        const std::ptrdiff_t rowCell = (static_cast<std::ptrdiff_t>(k) * nj + j) * ni;
         for (int i = 0; i < n[0]; ++i) {
-          float& u = velocity[a](i, j, k);
-          if (faceOpen[a](i, j, k) <= 0.0f) {
-            u = solidVelocity[a](i, j, k);
+          if (open[i] <= 0.0f) {
+            u[i] = wallVelocity[i];
             continue;
           }
-          const Index3 plusCell{i, j, k};
-          const Index3 minusCell = step(plusCell, a, -1);
-          const bool plusLiquid = isLiquid(liquidPhi, plusCell);
-          const bool minusLiquid = isLiquid(liquidPhi, minusCell);
+          const int along = a == 0 ? i : a == 1 ? j : k;
+          const std::ptrdiff_t plusCell = rowCell + i, minusCell = plusCell - stride;
+          const bool hasPlus = along < grid.cells[a], hasMinus = along > 0;
+          const bool plusLiquid = hasPlus && phi[plusCell] < 0.0f;
+          const bool minusLiquid = hasMinus && phi[minusCell] < 0.0f;
           if (!plusLiquid && !minusLiquid) continue;
-          const double pPlus = plusLiquid ? pressure_(i, j, k) : 0.0;
-          const double pMinus =
-              minusLiquid ? pressure_(minusCell[0], minusCell[1], minusCell[2]) : 0.0;
+          const double pPlus = plusLiquid ? pressure[plusCell] : 0.0;
+          const double pMinus = minusLiquid ? pressure[minusCell] : 0.0;
           double theta = 1.0;
           if (!plusLiquid || !minusLiquid) {
-            const Index3& liquid = plusLiquid ? plusCell : minusCell;
-            const Index3& air = plusLiquid ? minusCell : plusCell;
-            theta = liquidPhi.contains(air[0], air[1], air[2])
-                        ? surfaceFraction(liquidPhi(liquid[0], liquid[1], liquid[2]),
-                                          liquidPhi(air[0], air[1], air[2]))
-                        : kOpenBoundarySurfaceFraction;
+            const bool airInGrid = plusLiquid ? hasMinus : hasPlus;
+            theta = airInGrid ? surfaceFraction(phi[plusLiquid ? plusCell : minusCell],
+                                                phi[plusLiquid ? minusCell : plusCell])
+                              : kOpenBoundarySurfaceFraction;
           }
-          u = static_cast<float>(u - gradientScale * (pPlus - pMinus) / theta);
-          valid_[a](i, j, k) = 1;
+          u[i] = static_cast<float>(u[i] - gradientScale * (pPlus - pMinus) / theta);
+          valid[i] = 1;
         }
+      }
     });
   }
 }
