@@ -184,7 +184,8 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
 FluidSolver::~FluidSolver() = default;
 
 Array3f FluidSolver::surfaceFromParticles(const CellIndex& index) const {
-  Array3f phi = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_);
+  const std::size_t full = (static_cast<std::size_t>(scene_.solver.particlesPerCell) + 1) / 2;
+  Array3f phi = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_, full);
   // A cell holding 1.5× the seeding density is liquid whatever the kernel says: a sheet pressed
   // against a wall puts its particles within a sliver of the wall, where the kernel-averaged
   // surface would read the cell centre as air; as air it gets no pressure, gravity presses the

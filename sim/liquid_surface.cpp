@@ -17,6 +17,11 @@ namespace {
 /// next to the surface matter to the ghost-fluid pressure solve.
 constexpr double kFarFactor = 1.0;
 constexpr double kKernelRadiusCells = 1.5;
+/// Cells of full neighbourhood (each axis) that make a cell interior: 1 would do for the kernel
+/// (its 3×3×3 cells), 2 keeps interior cells out of every interpolation that also touches a cell
+/// next to the surface, so what reads φ in a uniform liquid gets the same bits as from the sum
+/// (liquid_surface.h).
+constexpr int kInteriorMarginCells = 2;
 
 /// x if `keep`, else +0.0, without a branch. Adding the +0.0 (or +0.0 · x) to a sum started at
 /// +0.0 leaves it bit for bit unchanged, so a skipped term and a zero term are the same.
@@ -63,15 +68,40 @@ struct NeighbourRows {
     return total;
   }
 };
+
+/// 1 for each cell whose cube of cells within `radius` (each axis) lies inside the grid and holds
+/// at least `count` particles per cell, else 0: the "full" mask eroded by separable passes.
+Array3<std::uint8_t> fullNeighbourhoods(const CellIndex& index, const Index3& cells, std::size_t count, int radius) {
+  Array3<std::uint8_t> mask(cells, 0), pass(cells, 0);
+  auto& full = mask.values();
+  for (std::size_t c = 0; c < full.size(); ++c) full[c] = index.start[c + 1] - index.start[c] >= count;
+  for (int a = 0; a < 3; ++a) {
+    tbb::parallel_for(0, cells[2], [&](int k) {
+      for (int j = 0; j < cells[1]; ++j)
+        for (int i = 0; i < cells[0]; ++i) {
+          const int at[3] = {i, j, k};
+          std::uint8_t all = at[a] >= radius && at[a] + radius < cells[a];
+          for (int d = -radius; all && d <= radius; ++d)
+            all = a == 0 ? mask(i + d, j, k) : a == 1 ? mask(i, j + d, k) : mask(i, j, k + d);
+          pass(i, j, k) = all;
+        }
+    });
+    std::swap(mask, pass);
+  }
+  return mask;
+}
 }  // namespace
 
 Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex& index,
-                                    const GridGeometry& grid, double particleRadius) {
+                                    const GridGeometry& grid, double particleRadius, std::size_t interiorCount) {
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   // R = 1.5 h: the largest kernel the 3×3×3 cells around a cell centre contain; a smaller one
   // leaves dents where the jittered particles thin out.
   const double h = grid.cellSize, radius = kKernelRadiusCells * h, radius2 = radius * radius;
   Array3f phi(grid.cells, static_cast<float>(radius * kFarFactor));
+  const Array3<std::uint8_t> interior =
+      interiorCount > 0 ? fullNeighbourhoods(index, grid.cells, interiorCount, kInteriorMarginCells)
+                        : Array3<std::uint8_t>(grid.cells, 0);
   tbb::parallel_for(0, nk, [&](int k) {
     NeighbourRows n;
     for (int j = 0; j < nj; ++j) {
@@ -79,6 +109,10 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
       const double *const px = n.x.data(), *const py = n.y.data(), *const pz = n.z.data();
       const double *const yy = n.yy.data(), *const zz = n.zz.data();
       for (int i = 0; i < ni; ++i) {
+        if (interior(i, j, k)) {
+          phi(i, j, k) = static_cast<float>(-particleRadius);
+          continue;
+        }
         const Vec3 x = grid.cellCentre(i, j, k);
         const int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, ni - 1);
         double weight = 0.0, mean[3] = {0.0, 0.0, 0.0};
