@@ -23,6 +23,25 @@ constexpr double kDensityDeadBand = 0.25;
 
 /// Cells of displacement extended beyond the liquid: particles near the surface read D there.
 constexpr int kExtendedLayers = 2;
+/// Depth [cells] below which every sample of expectedDensity reads all liquid: a sample is 1 from
+/// φ ≤ −h/4 on, and the samples interpolate the 27 centres around the cell; the extra 0.05 h
+/// keeps rounding in the interpolation away from that edge. The 64 weights sum to 1 exactly
+/// (dyadic), so returning 1 gives the bits the samples would.
+constexpr double kSaturatedDepthCells = 0.3;
+
+/// Whether φ ≤ `below` at the 27 centres around (i, j, k) (indices clamped to the grid, as the
+/// interpolation clamps them).
+bool surroundedBy(const Array3f& phi, int i, int j, int k, double below) {
+  const Index3& n = phi.size();
+  for (int dk = -1; dk <= 1; ++dk)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di)
+        if (phi(std::clamp(i + di, 0, n[0] - 1), std::clamp(j + dj, 0, n[1] - 1), std::clamp(k + dk, 0, n[2] - 1)) >
+            below)
+          return false;
+  return true;
+}
+
 /// ρ/ρ₀ that relativeParticleDensity would read at cell (i, j, k) for particles spread evenly
 /// through the liquid that φ describes, outside the scene's solids: the tent-weighted liquid
 /// fraction of the cell's tent support [−h, h]³, from 4 × 4 × 4 samples (each 0.5 h wide, liquid
@@ -37,6 +56,7 @@ double expectedDensity(const Array3f& phi, const Array3f& sceneSolidNodes, doubl
   const bool nearSolid = solidCentre < 1.5 * h;
   if (value <= -1.5 * h && !nearSolid) return 1.0;
   if (value >= 1.5 * h) return 0.0;
+  if (!nearSolid && surroundedBy(phi, i, j, k, -kSaturatedDepthCells * h)) return 1.0;  // every sample 1
   constexpr double offset[4] = {-0.75, -0.25, 0.25, 0.75}, weight[4] = {0.125, 0.375, 0.375, 0.125};
   const Vec3 centre = grid.cellCentre(i, j, k);
   double sum = 0.0;
