@@ -35,21 +35,25 @@ void extrapolateVelocity(MacVelocity& velocity, FaceMask valid, int layers) {
           const bool near = here > 0 || (j > 0 && row(j - 1, k) > 0) || (j + 1 < n[1] && row(j + 1, k) > 0) ||
                             (k > 0 && row(j, k - 1) > 0) || (k + 1 < n[2] && row(j, k + 1) > 0);
           if (!near) continue;
+          // Row pointers and steps to the six neighbours (those inside the grid), summed in the
+          // order −x, +x, −y, +y, −z, +z.
+          const std::size_t at = ok.offset(0, j, k);
+          const std::ptrdiff_t sj = n[0], sk = static_cast<std::ptrdiff_t>(n[0]) * n[1];
+          const float* const uRow = &u.values()[at];
+          const std::uint8_t* const okRow = &ok.values()[at];
+          const std::ptrdiff_t rowStep[4] = {-sj, sj, -sk, sk};
+          const bool rowInside[4] = {j > 0, j + 1 < n[1], k > 0, k + 1 < n[2]};
           for (int i = 0; i < n[0]; ++i) {
-            if (ok(i, j, k)) continue;
+            if (okRow[i]) continue;
             double sum = 0.0;
             int count = 0;
-            const int offsets[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-            for (const auto& o : offsets) {
-              const int x = i + o[0], y = j + o[1], z = k + o[2];
-              if (ok.contains(x, y, z) && ok(x, y, z)) {
-                sum += u(x, y, z);
-                ++count;
-              }
-            }
+            if (i > 0 && okRow[i - 1]) sum += uRow[i - 1], ++count;
+            if (i + 1 < n[0] && okRow[i + 1]) sum += uRow[i + 1], ++count;
+            for (int r = 0; r < 4; ++r)
+              if (rowInside[r] && okRow[i + rowStep[r]]) sum += uRow[i + rowStep[r]], ++count;
             if (count > 0) {
-              u(i, j, k) = static_cast<float>(sum / count);
-              made[k].push_back(ok.offset(i, j, k));
+              u.values()[at + i] = static_cast<float>(sum / count);
+              made[k].push_back(at + i);
             }
           }
         }
