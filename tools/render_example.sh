@@ -7,7 +7,7 @@
 # A bubble-track file (*.bubbles.json, e.g. scenes/pour.bubbles.json) is rendered by synth alone.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$here/tools/setup.sh"
+"$here/tools/setup.sh" --target fluidsound
 input=${1:-"$here/scenes/glass_pour.scene.json"}
 name=$(basename "$input" .json)
 fluidsound="$here/build/tools/fluidsound"

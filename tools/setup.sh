@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package fluidsound needs (a no-op when all are present), then
 # configures and builds the project in build/ (Release). Safe to run again at any time.
-#   usage: tools/setup.sh [--no-build]
+#   usage: tools/setup.sh [--no-build | --target TARGET]
+# --target builds one CMake target and what it needs (the quick start builds the `fluidsound`
+# CLI only, not the tests and benchmarks).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -31,10 +33,15 @@ if ((${#missing[@]})); then
 fi
 
 [ "${1:-}" = "--no-build" ] && exit 0
+target=()
+if [ "${1:-}" = "--target" ]; then
+  [ -n "${2:-}" ] || { echo "setup: --target needs a CMake target name" >&2; exit 2; }
+  target=(--target "$2")
+fi
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 if [ ! -f "$here/build/CMakeCache.txt" ]; then
   cmake -S "$here" -B "$here/build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >&2
 fi
-cmake --build "$here/build" -j"$(nproc)" >&2
+cmake --build "$here/build" -j"$(nproc)" "${target[@]}" >&2
