@@ -22,6 +22,7 @@
 #include "sim/fluid_solver.h"
 #include "sim/liquid_surface.h"
 #include "tools/cell_option.h"
+#include "tools/solver_memory.h"
 #include "tools/progress_display.h"
 #include "tools/run_report.h"
 
@@ -70,6 +71,7 @@ int runSimulateCommand(const SimulateOptions& o) {
   const auto start = Clock::now();
   // The cell size is final before the meshes load: their node distances are sampled on its grid.
   sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
+  requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   io::loadSceneMeshes(scene);
   const int total = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
   const FrameRange range = parseFrames(o.frames, total);

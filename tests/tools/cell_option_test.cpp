@@ -3,6 +3,7 @@
 // one line naming `--cell`, exit 2, and nothing is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -104,6 +105,44 @@ INSTANTIATE_TEST_SUITE_P(CellOption, BadCellOption, ::testing::ValuesIn(kBadCell
                          [](const ::testing::TestParamInfo<BadCell>& info) {
                            return std::string(info.param.name);
                          });
+
+// Claim: a grid whose arrays alone cannot fit in this machine's memory is refused before
+// anything is written — 1024³ cells of a 10.24 cm cube at 0.1 mm need at least 250 GB at the
+// solver's 250 B per cell (tools/solver_memory.h), more than any machine this runs on — with one
+// line naming `--cell` (exit 2) when the option made it, `domain.cell` and the scene file (exit 3)
+// when the file did. Reference: the cell count and the byte figure of the message.
+TEST(CellOption, AGridLargerThanMemoryIsRefusedBeforeAnythingIsWritten) {
+  constexpr int kExitBadInput = 3;  // docs/cli.md: a bad input file
+  const TempFolder folder;
+  const fs::path scene = folder.path() / "cube.json";
+  const auto writeCube = [&](const char* cell) {
+    std::ofstream(scene) << R"({ "format": "fluidsound.scene/1",
+      "domain": { "min": [0, 0, 0], "max": [0.1024, 0.1024, 0.1024], "cell": )" << cell << R"( },
+      "time": { "duration": 0.1, "fps": 30 } })";
+  };
+  const std::string counted = "found 0.0001 m: 1024 x 1024 x 1024 = 1.07e+09 cells, at least 250.0 GiB";
+  writeCube("0.0128");
+  for (const char* command : {"simulate", "run"}) {
+    SCOPED_TRACE(command);
+    const fs::path out = folder.path() / "out";
+    const CommandOutcome byOption =
+        runFluidsound({command, scene.string(), "-o", out.string(), "--cell", "0.0001", "--quiet"});
+    EXPECT_EQ(byOption.exitCode, kExitUsage) << byOption.err;
+    EXPECT_EQ(byOption.err.rfind("fluidsound: error: --cell: expected a cell size whose grid fits in this "
+                                 "machine's ", 0), 0u) << byOption.err;
+    EXPECT_NE(byOption.err.find(counted), std::string::npos) << byOption.err;
+    EXPECT_EQ(std::count(byOption.err.begin(), byOption.err.end(), '\n'), 1) << byOption.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  writeCube("0.0001");
+  const fs::path out = folder.path() / "out";
+  const CommandOutcome byFile = runFluidsound({"simulate", scene.string(), "-o", out.string(), "--quiet"});
+  EXPECT_EQ(byFile.exitCode, kExitBadInput) << byFile.err;
+  EXPECT_EQ(byFile.err.rfind("fluidsound: error: " + scene.string() + ": domain.cell: expected a cell size whose "
+                             "grid fits", 0), 0u) << byFile.err;
+  EXPECT_NE(byFile.err.find(counted), std::string::npos) << byFile.err;
+  EXPECT_FALSE(fs::exists(out));
+}
 
 // Claim: `run`'s stage hash includes the cell size it runs at: the same size as the file's
 // (given or not) reuses every stage, another one simulates again (and so transfers and
