@@ -41,6 +41,13 @@ constexpr double kDensityCorrectionTolerance = 1e-3;
 /// φ below which a cut cell under liquid counts as liquid for the pressure solve [cells]
 /// (extendIntoSolids): above the |φ| ≤ 0.06 h measured in under-seeded corner cells.
 constexpr double kCutCellSurfaceLimit = 0.1;
+/// Speed [cells/s] from which the level set follows the particles alone (LevelSetHold::trustSpeed):
+/// 0.1 m/s at 1 cm cells. Still and slowly moving liquid (a tank, a settling pool) keeps the
+/// level set's surface; a pour or a surge, the particles'.
+constexpr double kTrustSpeedCellsPerSecond = 10.0;
+/// Cells beyond the CFL number in which the level set is advected (LiquidLevelSet::advect): the
+/// band the surface can reach in a substep, plus the cells the interpolation next to it reads.
+constexpr double kLevelSetMarginCells = 3.0;
 /// Faces wholly inside solids move with the solid (after extrapolation filled them with liquid
 /// velocities): no particle is carried into a wall (Batty's Fluid3D `constrain_velocity`, here
 /// for the whole velocity of closed faces).
@@ -178,7 +185,17 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
   velocity_ = MacVelocity(grid_);
   const CellIndex& index = sortParticlesByCell(particles_, grid_, work_->transfer);
   particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight, work_->transfer);
-  liquidPhi_ = surfaceFromParticles(index);
+  levelSet_ = LiquidLevelSet(scene, grid_, work_->solidNodes);
+  levelSet_.holdToParticles(surfaceFromParticles(index), index, velocity_, work_->sceneSolidNodes, levelSetHold());
+  liquidPhi_ = levelSet_.phi();
+  liquidVolumeTarget_ = liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+}
+
+LevelSetHold FluidSolver::levelSetHold() const {
+  LevelSetHold hold;
+  hold.trustSpeed = kTrustSpeedCellsPerSecond * grid_.cellSize;
+  hold.fullCount = (scene_.solver.particlesPerCell + 1) / 2;
+  return hold;
 }
 
 FluidSolver::~FluidSolver() = default;
@@ -215,15 +232,21 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   stats.densityIterations += correction.solve.iterations;
   stats.maxDensityExcess = std::max(stats.maxDensityExcess, correction.maxExcess);
   // 2. Refill liquid cells left with too few particles and thin what is still clumped. The surface
-  //    from before the correction decides which cells are liquid (the correction moves particles
-  //    by a fraction of a cell; the next substep rebuilds the surface anyway).
+  //    level set decides which cells are liquid (the correction moves particles by a fraction of a
+  //    cell).
   const CellIndex& after = sortParticlesByCell(particles_, grid_, w.transfer);
-  liquidPhi_ = particlePhi;
+  // The level set held to the particles as each substep holds it, then given their volume.
+  levelSet_.holdToParticles(particlePhi, after, velocity_, w.sceneSolidNodes, levelSetHold());
+  const double particleVolume = std::pow(grid_.cellSize, 3) / scene_.solver.particlesPerCell;
+  liquidVolumeTarget_ += (static_cast<double>(stats.particlesEmitted) - static_cast<double>(leftThroughOpenFaces_)) * particleVolume;
+  leftThroughOpenFaces_ = 0;
+  levelSet_.matchVolume(liquidVolumeTarget_, w.sceneSolidNodes);
+  liquidPhi_ = levelSet_.phi();
   ReseedingLimits limits;
   limits.target = scene_.solver.particlesPerCell;
   limits.minimum = std::min(limits.minimum, limits.target);
   limits.maximum = std::max(limits.maximum, 2 * limits.target);
-  const ReseedingCount count = reseedParticles(particles_, after, liquidPhi_, SolidBoundary{w.solidNodes, w.meshWalls, time_, time_},
+  const ReseedingCount count = reseedParticles(particles_, after, particlePhi, SolidBoundary{w.solidNodes, w.meshWalls, time_, time_},
                                                velocity_, grid_, limits,
                                                scene_.seed, ++reseedPasses_);
   assignParticleIds(particles_.id, nextParticleId_);
@@ -313,35 +336,44 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   extrapolateVelocity(velocity_, w.reached, kExtraLayers);
   const bool flip = scene_.solver.transfer == TransferScheme::Flip;
   if (flip) w.oldVelocity = velocity_;  // APIC does not read it
-  // 2. Body forces.
+  // 2. Free surface, held to the particles before gravity changes the velocity it reads.
+  levelSet_.holdToParticles(surfaceFromParticles(index), index, velocity_, work_->sceneSolidNodes, levelSetHold());
+  liquidPhi_ = levelSet_.phi();
+  lap(seconds.surface);
+  // 3. Body forces, then the pressure projection.
   for (int a = 0; a < 3; ++a) {
     const float dv = static_cast<float>(scene_.gravity[a] * dt);
     for (float& u : velocity_[a].values()) u += dv;
   }
   lap(seconds.forces);
-  // 3. Free surface and pressure projection.
-  liquidPhi_ = surfaceFromParticles(index);
-  lap(seconds.surface);
   PressureSettings settings;
   settings.tolerance = scene_.solver.pressureTolerance;
   settings.maxIterations = scene_.solver.maxPressureIterations;
-  const Array3f pressurePhi = extendIntoSolids(liquidPhi_, w.solidNodes, grid_, upFromGravity(scene_.gravity));
+  // Static solids: the level runs on through them (liquid_level_set.h). Moving ones keep the
+  // particle-era rule, which a moving solid's swept cells need (docs/solver.md).
+  const Array3f pressurePhi = w.solidsMove
+                                  ? extendIntoSolids(liquidPhi_, w.solidNodes, grid_, upFromGravity(scene_.gravity))
+                                  : extendLevelAcrossSolids(liquidPhi_, w.solidNodes, upFromGravity(scene_.gravity), grid_.cellSize);
   const PressureReport report = w.pressure.project(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
                                                    properties_.density, dt, settings);
   stats.pressureIterations += report.iterations;
   stats.pressureResidual = std::max(stats.pressureResidual, report.relativeResidual);
   stats.pressureConverged = stats.pressureConverged && report.converged;
   stats.maxDivergence = std::max(
-      stats.maxDivergence, maxRelativeDivergence(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_));
+      stats.maxDivergence, maxRelativeDivergence(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
+                                            std::hypot(scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]) * dt));
   lap(seconds.pressure);
   // 4. Velocity beyond the liquid, grid → particles, advection.
   extrapolateVelocity(velocity_, w.pressure.validFaces(), static_cast<int>(std::ceil(scene_.time.cfl)) + kExtraLayers);
   constrainToSolids(velocity_, w.faceOpen, w.solidVelocity);
   gridToParticles(particles_, velocity_, flip ? w.oldVelocity : velocity_, grid_, scene_.solver);
   lap(seconds.gridToParticles);
-  stats.particlesDeleted += advectParticles(particles_, velocity_, grid_,
+  const std::size_t left = advectParticles(particles_, velocity_, grid_,
                                               SolidBoundary{w.solidNodes, w.meshWalls, time_, time_ + dt},
                                               scene_.domain, dt);
+  stats.particlesDeleted += left;
+  leftThroughOpenFaces_ += left;
+  levelSet_.advect(velocity_, w.sceneSolidNodes, dt, std::ceil(scene_.time.cfl) + kLevelSetMarginCells);
   lap(seconds.advection);
   if (observer) {
     observer(LiquidState{particles_.position, particles_.velocity, particles_.id, liquidPhi_, velocity_, w.solidNodes,

@@ -11,6 +11,7 @@
 
 #include "sim/array3.h"
 #include "sim/grid.h"
+#include "sim/liquid_level_set.h"
 #include "sim/liquid_state.h"
 #include "sim/mac_velocity.h"
 #include "sim/particles.h"
@@ -89,6 +90,7 @@ class FluidSolver {
   double stableTimeStep() const;
   /// The liquid distance at cell centres from the sorted particles.
   Array3f surfaceFromParticles(const struct CellIndex& index) const;
+  LevelSetHold levelSetHold() const;
   /// Once per frame: the density correction, then reseeding (docs/solver.md, steps 10–11).
   void maintainParticles(FrameStats& stats);
 
@@ -102,6 +104,11 @@ class FluidSolver {
   Particles particles_;
   MacVelocity velocity_;
   Array3f liquidPhi_;
+  LiquidLevelSet levelSet_;
+  /// The liquid's volume [m³]: the level set's at the start, then changed only by what the
+  /// emitters add and what leaves through open faces (h³/particlesPerCell per particle).
+  double liquidVolumeTarget_ = 0.0;
+  std::size_t leftThroughOpenFaces_ = 0;  ///< particles advection deleted since the last frame
   std::unique_ptr<Workspace> work_;
 };
 

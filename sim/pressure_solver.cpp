@@ -227,9 +227,10 @@ namespace {
 
 double relativeDivergence(const MacVelocity& velocity, const Array3f& liquidPhi,
                           const std::array<Array3f, 3>& faceOpen,
-                          const std::array<Array3f, 3>* solidVelocity, const GridGeometry& grid) {
+                          const std::array<Array3f, 3>* solidVelocity, const GridGeometry& grid,
+                          double speedFloor) {
   double maxOutflow = 0.0;
-  double maxSpeed = 0.0;
+  double maxSpeed = speedFloor;
   for (int k = 0; k < grid.cells[2]; ++k)
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
@@ -250,13 +251,13 @@ double relativeDivergence(const MacVelocity& velocity, const Array3f& liquidPhi,
 double maxRelativeDivergence(const MacVelocity& velocity, const Array3f& liquidPhi,
                              const std::array<Array3f, 3>& faceOpen,
                              const std::array<Array3f, 3>& solidVelocity,
-                             const GridGeometry& grid) {
-  return relativeDivergence(velocity, liquidPhi, faceOpen, &solidVelocity, grid);
+                             const GridGeometry& grid, double speedFloor) {
+  return relativeDivergence(velocity, liquidPhi, faceOpen, &solidVelocity, grid, speedFloor);
 }
 
 double maxRelativeDivergence(const MacVelocity& velocity, const Array3f& liquidPhi,
                              const std::array<Array3f, 3>& faceOpen, const GridGeometry& grid) {
-  return relativeDivergence(velocity, liquidPhi, faceOpen, nullptr, grid);
+  return relativeDivergence(velocity, liquidPhi, faceOpen, nullptr, grid, 0.0);
 }
 
 }  // namespace fluidsound::sim

@@ -123,11 +123,14 @@ class PressureSolver {
 
 /// @brief Largest relative divergence max_c |Σ_f ±[w_f·u_f + (1 − w_f)·u_solid,f]| / max|u| over
 ///        liquid cells with an open face (the discrete weighted divergence of the projection,
-///        times h, divided by the largest |u| on the faces of those cells). The acceptance test
-///        asks for < 1e-4. 0 when there is no liquid.
+///        times h, divided by the largest |u| on the faces of those cells, or by `speedFloor` [m/s]
+///        if that is larger). The acceptance test asks for < 1e-4. 0 when there is no liquid.
+///        The solver's floor is |g|·Δt, the speed its substep's forces add: liquid at rest leaves
+///        round-off velocities whose ratio to each other means nothing.
 double maxRelativeDivergence(const MacVelocity& velocity, const Array3f& liquidPhi,
                              const std::array<Array3f, 3>& faceOpen,
-                             const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid);
+                             const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,
+                             double speedFloor = 0.0);
 
 /// @brief maxRelativeDivergence for static solids (u_solid = 0).
 double maxRelativeDivergence(const MacVelocity& velocity, const Array3f& liquidPhi,

@@ -1,11 +1,15 @@
 // Tests of sim/fluid_solver.h: whole substeps of the liquid solver on coarse grids.
 #include "sim/fluid_solver.h"
+#include "sim/liquid_level_set.h"
 #include "sim/liquid_surface.h"
+#include "sim/particle_seeding.h"
+#include "sim/solid_geometry.h"
 
 #include <gtest/gtest.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace fluidsound::sim {
 namespace {
@@ -47,9 +51,9 @@ TEST(FluidSolver, DamBreakStaysDivergenceFreeAndConverges) {
 // cells, advanced frame by frame at 30 fps as `simulate` does, so the once-per-frame density
 // correction and reseeding run). Measured: −0.2 % (clumps thinned above 16 per cell).
 // Reference: frame 0. Tolerance: the issue's 2 %.
-// The level-set volume is a regression bound only (5 %): it reads the column 1 % low at frame 0,
-// +3.2 % at 3 s, and up to +16 % while the splash is in the air (sheets thinner than a cell read
-// ~0.8 cell thick).
+// The level set's volume is held to the liquid's (LiquidLevelSet::matchVolume: a closed box keeps
+// its start volume); checked to 1 %, which fails if the hold cannot keep it (its shift is capped
+// at half a cell per frame).
 TEST(FluidSolver, DamBreakKeepsItsVolumeForThreeSeconds) {
   Scene scene = damBreak();
   scene.domain.max[2] = 0.1;
@@ -64,7 +68,8 @@ TEST(FluidSolver, DamBreakKeepsItsVolumeForThreeSeconds) {
     ASSERT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
     ASSERT_EQ(stats.particlesDeleted, 0u) << "a closed box loses nothing";
   }
-  EXPECT_NEAR(stats.liquidVolume, volume, 0.05 * volume);
+  EXPECT_NEAR(liquidVolumeOutsideSolids(solver.liquidDistance(), Array3f(Index3{51, 31, 11}, 1.0f), solver.grid()),
+              volume, 0.01 * volume);
   for (const Vec3f& x : solver.particles().position) {
     ASSERT_GE(x[1], 0.0f);
     ASSERT_LE(x[0], 0.5f);
@@ -87,34 +92,97 @@ TEST(FluidSolver, IdenticalParticlesForAnyThreadCount) {
   EXPECT_EQ(one, two);
 }
 
-// A tank at rest stays nearly at rest. The issue's goal is < 1 mm/s after 2 s; the bumps of the
-// particle surface start gravity waves (the fastest particles move vertically at the surface):
-// measured 8.1 mm/s at 0.5 s, 6.5 at 1 s, 2.9 at 1.5 s, 2.3 mm/s at 2 s (median 0.3 mm/s). This
-// is a regression bound (3 mm/s at 2 s), not the goal — a known gap, recorded in docs/solver.md.
-TEST(FluidSolver, RestingTankStaysNearlyAtRest) {
-  FluidSolver solver(tank(0.0735));
+/// The resting tanks' measures after `seconds` of 30-fps frames: the fastest particle [m/s] and
+/// the spread (highest − lowest) of the surface height [m] over the columns whose surface lies
+/// outside every solid, each column's height where φ crosses zero going up (linear between the
+/// two centres). Every frame's projection is also checked divergence-free (< 1e-4).
+struct RestMeasure {
+  double maxSpeed = 0.0, heightSpread = 0.0;
+  int columns = 0;
+};
+RestMeasure restAfter(const Scene& scene, double seconds) {
+  FluidSolver solver(scene);
   FrameStats stats;
-  for (int frame = 1; frame <= 60; ++frame) {
+  for (int frame = 1; frame <= static_cast<int>(seconds * 30.0 + 0.5); ++frame) {
     stats = solver.advanceTo(frame / 30.0);
-    ASSERT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
+    EXPECT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
   }
-  EXPECT_LT(stats.maxSpeed, 0.003);
+  const Array3f& phi = solver.liquidDistance();
+  const GridGeometry& g = solver.grid();
+  Domain noWalls = scene.domain;
+  noWalls.open.fill(true);
+  const Array3f solids = solidNodeDistance(g, noWalls, scene.solids, solver.time());
+  RestMeasure m;
+  m.maxSpeed = stats.maxSpeed;
+  double lowest = 1e9, highest = -1e9;
+  for (int k = 0; k < g.cells[2]; ++k)
+    for (int i = 0; i < g.cells[0]; ++i)
+      for (int j = 0; j + 1 < g.cells[1]; ++j) {
+        if (!(phi(i, j, k) < 0.0f && phi(i, j + 1, k) >= 0.0f)) continue;
+        const double f = phi(i, j, k) / (phi(i, j, k) - phi(i, j + 1, k));
+        const Vec3 at{g.cellCentre(i, j, k)[0], g.cellCentre(i, j, k)[1] + f * g.cellSize, g.cellCentre(i, j, k)[2]};
+        if (interpolateNodes(solids, g, at) > 0.5 * g.cellSize) {  // a free surface, not a contact line
+          lowest = std::min(lowest, at[1]);
+          highest = std::max(highest, at[1]);
+          ++m.columns;
+        }
+        break;
+      }
+  m.heightSpread = highest - lowest;
+  return m;
 }
 
-// A tank with a sloped floor (a box rotated 15° about z, meeting the −x wall under 7 cm of water)
-// stays nearly at rest. The issue's goal is < 1 mm/s after 2 s; measured 6.6 mm/s at 0.5 s,
-// 2.9 mm/s at 2 s (10–30 cm/s while the under-seeded corner cells between slope and wall read as
-// a free surface, docs/solver.md). A regression bound (5 mm/s at 2 s), not the goal.
-TEST(FluidSolver, SlopedFloorTankStaysNearlyAtRest) {
+// Claim (issue 4): a tank at rest stays at rest — after 2 s simulated the fastest particle moves
+// at < 1 mm/s and the surface height varies by < 0.1 cell — with the liquid's top inside a row
+// of cells (7.35 cells) and on a plane of cell faces (8 cells), where the particle surface alone
+// left 2.3 and 10 mm/s (docs/solver.md). The level set starts flat and nothing disturbs it:
+// measured 0 m/s and a spread of 0 (to float round-off). Reference: rest. Tolerance: the
+// issue's 1 mm/s and 0.1 cell.
+TEST(FluidSolver, RestingTankStaysAtRest) {
+  for (const double level : {0.0735, 0.08}) {
+    SCOPED_TRACE(level);
+    const RestMeasure m = restAfter(tank(level), 2.0);
+    EXPECT_LT(m.maxSpeed, 1e-3);
+    EXPECT_LT(m.heightSpread, 0.1 * 0.01);
+    EXPECT_EQ(m.columns, 16 * 16);
+    std::cout << "[ measured ] level " << level << " m: max speed " << m.maxSpeed << " m/s, height spread "
+              << m.heightSpread / 0.01 << " cell\n";
+  }
+}
+
+// Claim (issue 4): the same over a sloped floor (a box rotated 15° about z, meeting the −x wall
+// under 7 cm of water), where the contact line runs along a slanted wall: < 1 mm/s and a spread
+// < 0.1 cell after 2 s (the particle surface alone: 2.9 mm/s). Measured: 0 m/s, spread 0.
+// Reference: rest. Tolerance: the issue's.
+TEST(FluidSolver, SlopedFloorTankStaysAtRest) {
   Scene scene = tank(0.0735);
   Solid slope;
   slope.shape = Box{{-0.05, -0.1, -0.05}, {0.21, 0.02, 0.21}};
   slope.rotateDegrees = {0.0, 0.0, 15.0};
   scene.solids.push_back(slope);
-  FluidSolver solver(scene);
-  FrameStats stats;
-  for (int frame = 1; frame <= 60; ++frame) stats = solver.advanceTo(frame / 30.0);
-  EXPECT_LT(stats.maxSpeed, 0.005);
+  const RestMeasure m = restAfter(scene, 2.0);
+  EXPECT_LT(m.maxSpeed, 1e-3);
+  EXPECT_LT(m.heightSpread, 0.1 * 0.01);
+  EXPECT_GT(m.columns, 16 * 16 / 2);
+  std::cout << "[ measured ] sloped floor: max speed " << m.maxSpeed << " m/s, height spread " << m.heightSpread / 0.01
+            << " cell over " << m.columns << " columns\n";
+}
+
+// Claim (issue 4): the same against a curved solid wall — a sphere solid (r = 5 cm) rising
+// through the surface, its contact line a circle on the curved wall (the particle surface alone:
+// 7 mm/s and, before the cut-cell rules, 13–23 cm/s). Measured: 0 m/s, spread 0.
+// Reference: rest. Tolerance: the issue's.
+TEST(FluidSolver, TankAroundACurvedSolidStaysAtRest) {
+  Scene scene = tank(0.0735);
+  Solid sphere;
+  sphere.shape = Sphere{{0.08, 0.05, 0.08}, 0.05};
+  scene.solids.push_back(sphere);
+  const RestMeasure m = restAfter(scene, 2.0);
+  EXPECT_LT(m.maxSpeed, 1e-3);
+  EXPECT_LT(m.heightSpread, 0.1 * 0.01);
+  EXPECT_GT(m.columns, 16 * 16 / 2);
+  std::cout << "[ measured ] sphere through the surface: max speed " << m.maxSpeed << " m/s, height spread "
+            << m.heightSpread / 0.01 << " cell over " << m.columns << " columns\n";
 }
 
 }  // namespace

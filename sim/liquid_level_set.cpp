@@ -1,0 +1,248 @@
+// sim/liquid_level_set.cpp — see liquid_level_set.h.
+#include "sim/liquid_level_set.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <variant>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "sim/cell_interpolation.h"
+#include "sim/liquid_surface.h"
+#include "sim/particle_seeding.h"
+
+namespace fluidsound::sim {
+namespace {
+
+/// φ where nothing is known: far from every region, as the particle surface's far value.
+constexpr double kFarCells = 8.0;
+/// φ a cell is held to where the particles leave no doubt [cells]: within half a cell of its
+/// centre on the liquid (every cell around full) or the air (no particle around) side.
+constexpr double kCertainCells = 0.5;
+
+/// Whether the cell's centre lies inside a solid: the mean of its 8 nodal distances < 0 (the
+/// solver's rule for solid cells).
+bool centreInSolid(const Array3f& solidNodes, int i, int j, int k) {
+  float sum = 0.0f;
+  for (int c = 0; c < 8; ++c) sum += solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
+  return sum < 0.0f;
+}
+
+/// Per cell, over the 3 × 3 × 3 block around it (cells beyond the grid hold nothing): whether
+/// every cell holds at least `fullCount` particles (bit 1) and whether any particle is there
+/// (bit 2). Separable passes along x, y, z.
+Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n, std::size_t fullCount) {
+  constexpr std::uint8_t kFull = 1, kAny = 2;
+  Array3<std::uint8_t> flags(n, 0), pass(n, 0);
+  auto& f = flags.values();
+  for (std::size_t c = 0; c < f.size(); ++c) {
+    const std::size_t held = index.start[c + 1] - index.start[c];
+    f[c] = static_cast<std::uint8_t>((held >= fullCount ? kFull : 0) | (held > 0 ? kAny : 0));
+  }
+  for (int a = 0; a < 3; ++a) {
+    tbb::parallel_for(0, n[2], [&](int k) {
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          const int at[3] = {i, j, k};
+          std::uint8_t full = kFull, any = 0;
+          for (int d = -1; d <= 1; ++d) {
+            const int m = at[a] + d;
+            if (m < 0 || m >= n[a]) {
+              full = 0;
+              continue;
+            }
+            const std::uint8_t v = a == 0 ? flags(m, j, k) : a == 1 ? flags(i, m, k) : flags(i, j, m);
+            full &= v;
+            any |= v & kAny;
+          }
+          pass(i, j, k) = static_cast<std::uint8_t>((full & kFull) | any);
+        }
+    });
+    std::swap(flags, pass);
+  }
+  return flags;
+}
+}  // namespace
+
+double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes, const GridGeometry& grid) {
+  const double h = grid.cellSize;
+  constexpr int kSamples = 4;  // per axis and cell, as liquidVolume
+  constexpr double kWidth = 1.0 / kSamples;
+  std::vector<double> perSlab(static_cast<std::size_t>(grid.cells[2]), 0.0);
+  tbb::parallel_for(0, grid.cells[2], [&](int k) {
+    double sum = 0.0;
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i) {
+        const double centre = phi(i, j, k);
+        if (centre >= h) continue;  // all air
+        double solidAtNodes = std::numeric_limits<double>::max();
+        for (int c = 0; c < 8; ++c)
+          solidAtNodes = std::min(solidAtNodes, static_cast<double>(sceneSolidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2))));
+        if (centre <= -h && solidAtNodes >= h) {  // all liquid, no solid near
+          sum += 1.0;
+          continue;
+        }
+        const Vec3 corner = grid.worldFromGrid({double(i), double(j), double(k)});
+        double fraction = 0.0;
+        for (int s = 0; s < kSamples * kSamples * kSamples; ++s) {
+          const Vec3 x{corner[0] + (s % kSamples + 0.5) * kWidth * h,
+                       corner[1] + ((s / kSamples) % kSamples + 0.5) * kWidth * h,
+                       corner[2] + (s / (kSamples * kSamples) + 0.5) * kWidth * h};
+          if (interpolateNodes(sceneSolidNodes, grid, x) <= 0.0f) continue;
+          fraction += std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (kWidth * h), 0.0, 1.0);
+        }
+        sum += fraction / (kSamples * kSamples * kSamples);
+      }
+    perSlab[k] = sum;
+  });
+  double cells = 0.0;
+  for (const double s : perSlab) cells += s;  // in slab order: the same sum on any thread count
+  return cells * h * h * h;
+}
+
+LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid, const Array3f& solidNodes)
+    : grid_(grid), phi_(grid.cells, static_cast<float>(kFarCells * grid.cellSize)) {
+  if (scene.liquid.empty()) return;
+  // A box's faces on the domain's walls are no surface: moved far out, so the distance inside is
+  // to the box's free faces alone (a tank's water is y − H deep at the walls too).
+  std::vector<LiquidRegion> regions = scene.liquid;
+  for (LiquidRegion& r : regions)
+    if (auto* box = std::get_if<Box>(&r.shape))
+      for (int a = 0; a < 3; ++a) {
+        const double slack = 1e-6 * grid.cellSize;
+        if (box->min[a] <= scene.domain.min[a] + slack) box->min[a] = scene.domain.min[a] - kFarCells * grid.cellSize;
+        if (box->max[a] >= scene.domain.max[a] - slack) box->max[a] = scene.domain.max[a] + kFarCells * grid.cellSize;
+      }
+  tbb::parallel_for(0, grid.cells[2], [&](int k) {
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i) {
+        const Vec3 x = grid.cellCentre(i, j, k);
+        double region = kFarCells * grid.cellSize;
+        for (const LiquidRegion& r : regions) region = std::min(region, regionDistance(r, x));
+        // Inside a solid: air (the solid's own depth), the solid holds no liquid.
+        const double solid = interpolateNodes(solidNodes, grid, x);
+        phi_(i, j, k) = static_cast<float>(solid < 0.0 ? std::max(region, -solid) : region);
+      }
+  });
+}
+
+void LiquidLevelSet::holdToParticles(const Array3f& particlePhi, const CellIndex& index, const MacVelocity& velocity,
+                                     const Array3f& sceneSolidNodes, const LevelSetHold& hold) {
+  const Index3 n = grid_.cells;
+  const double h = grid_.cellSize;
+  const Array3<std::uint8_t> flags = neighbourhoodFlags(index, n, static_cast<std::size_t>(hold.fullCount));
+  tbb::parallel_for(0, n[2], [&](int k) {
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        float& phi = phi_(i, j, k);
+        const float particle = particlePhi(i, j, k);
+        if (std::isnan(phi)) {  // carried out of a solid: the particles say
+          phi = particle;
+          continue;
+        }
+        const std::uint8_t around = flags(i, j, k);
+        if (around & 1) {  // every cell around full
+          phi = std::min(phi, static_cast<float>(-kCertainCells * h));
+          continue;
+        }
+        if (!(around & 2)) {  // no particle around
+          phi = std::max(phi, static_cast<float>(kCertainCells * h));
+          continue;
+        }
+        const double ux = 0.5 * (velocity[0](i, j, k) + velocity[0](i + 1, j, k));
+        const double uy = 0.5 * (velocity[1](i, j, k) + velocity[1](i, j + 1, k));
+        const double uz = 0.5 * (velocity[2](i, j, k) + velocity[2](i, j, k + 1));
+        const double speed = std::sqrt(ux * ux + uy * uy + uz * uz);
+        const double band = hold.bandCells * h * std::clamp(1.0 - speed / hold.trustSpeed, 0.0, 1.0);
+        phi = std::clamp(phi, static_cast<float>(particle - band), static_cast<float>(particle + band));
+      }
+  });
+  keepSolidsDry(sceneSolidNodes);
+}
+
+void LiquidLevelSet::keepSolidsDry(const Array3f& sceneSolidNodes) {
+  tbb::parallel_for(0, grid_.cells[2], [&](int k) {
+    for (int j = 0; j < grid_.cells[1]; ++j)
+      for (int i = 0; i < grid_.cells[0]; ++i) {
+        if (!centreInSolid(sceneSolidNodes, i, j, k) ) continue;
+        const double solid = interpolateNodes(sceneSolidNodes, grid_, grid_.cellCentre(i, j, k));
+        if (solid < 0.0) phi_(i, j, k) = std::max(phi_(i, j, k), static_cast<float>(-solid));
+      }
+  });
+}
+
+void LiquidLevelSet::advect(const MacVelocity& velocity, const Array3f& sceneSolidNodes, double dt, double bandCells) {
+  Array3f next = phi_;
+  const float band = static_cast<float>(bandCells * grid_.cellSize);
+  tbb::parallel_for(0, grid_.cells[2], [&](int k) {
+    for (int j = 0; j < grid_.cells[1]; ++j)
+      for (int i = 0; i < grid_.cells[0]; ++i) {
+        if (std::abs(phi_(i, j, k)) >= band) continue;  // far from the surface: only its sign counts
+        const Vec3 x = grid_.cellCentre(i, j, k);
+        const Vec3 u0 = interpolateVelocity(velocity, grid_, x);
+        const Vec3 mid{x[0] - 0.5 * dt * u0[0], x[1] - 0.5 * dt * u0[1], x[2] - 0.5 * dt * u0[2]};
+        const Vec3 u1 = interpolateVelocity(velocity, grid_, mid);
+        const Vec3 from{x[0] - dt * u1[0], x[1] - dt * u1[1], x[2] - dt * u1[2]};
+        next(i, j, k) = interpolateNodes(sceneSolidNodes, grid_, from) < 0.0f
+                            ? std::numeric_limits<float>::quiet_NaN()
+                            : static_cast<float>(interpolateCellCentres(phi_, grid_, from));
+      }
+  });
+  phi_ = std::move(next);
+}
+
+void LiquidLevelSet::matchVolume(double target, const Array3f& sceneSolidNodes) {
+  const double h = grid_.cellSize;
+  // Cells carried out of a solid (NaN until the next hold) count as air here.
+  Array3f known = phi_;
+  std::size_t surfaceCells = 0;
+  for (float& phi : known.values()) {
+    if (std::isnan(phi)) phi = static_cast<float>(kFarCells * h);
+    surfaceCells += std::abs(phi) < 0.5 * h;
+  }
+  if (surfaceCells == 0) return;
+  const double shift = std::clamp((liquidVolumeOutsideSolids(known, sceneSolidNodes, grid_) - target) / (static_cast<double>(surfaceCells) * h * h),
+                                  -kCertainCells * h, kCertainCells * h);
+  for (float& phi : phi_.values()) phi = static_cast<float>(phi + shift);  // NaN stays NaN
+  keepSolidsDry(sceneSolidNodes);
+}
+
+Array3f extendLevelAcrossSolids(const Array3f& phi, const Array3f& solidNodes, const Index3& up, double h) {
+  Array3f out = phi;
+  const Index3 n = phi.size();
+  const int upAxis = up[0] != 0 ? 0 : up[1] != 0 ? 1 : 2;
+  tbb::parallel_for(0, n[2], [&](int k) {
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        if (!centreInSolid(solidNodes, i, j, k)) continue;
+        double sum = 0.0;
+        int count = 0;
+        for (int a = 0; a < 3; ++a) {
+          if (a == upAxis) continue;
+          for (const int side : {-1, 1}) {
+            Index3 c{i, j, k};
+            c[a] += side;
+            if (c[a] < 0 || c[a] >= n[a] || centreInSolid(solidNodes, c[0], c[1], c[2])) continue;
+            sum += phi(c[0], c[1], c[2]);
+            ++count;
+          }
+        }
+        if (count > 0) {
+          out(i, j, k) = static_cast<float>(sum / count);
+          continue;
+        }
+        // Under (over) a cell outside the solid: one cell deeper (higher) than it.
+        for (const int side : {1, -1}) {
+          const Index3 c{i + side * up[0], j + side * up[1], k + side * up[2]};
+          if (c[upAxis] < 0 || c[upAxis] >= n[upAxis] || centreInSolid(solidNodes, c[0], c[1], c[2])) continue;
+          out(i, j, k) = static_cast<float>(phi(c[0], c[1], c[2]) - side * h);
+          break;
+        }
+      }
+  });
+  return out;
+}
+
+}  // namespace fluidsound::sim
