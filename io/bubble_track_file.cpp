@@ -1,17 +1,22 @@
-// io/bubble_track_file.cpp — `fluidsound.bubbles/1` (docs/bubbles-format.md): JSON through
-// nlohmann-json, validated field by field into acoustics::BubbleTrackSet, and written back.
+// io/bubble_track_file.cpp — `fluidsound.bubbles/1` (docs/bubbles-format.md): read in one pass when
+// plain (bubble_track_fast_reader.h), else through nlohmann-json and validated field by field into
+// acoustics::BubbleTrackSet; written back as text directly.
 #include "io/bubble_track_file.h"
 
+#include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 
 #include "io/atomic_file.h"
+#include "io/bubble_track_fast_reader.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
 
@@ -146,37 +151,78 @@ class TrackSetReader {
 
 // ---- writing ------------------------------------------------------------------------------------
 
+/// Appends a number as nlohmann-json writes it: the shortest text that reads back to the same
+/// double (its Grisu2 conversion, called directly so that no JSON value is built per number);
+/// `null` for NaN and infinities, which the reader rejects.
+void appendNumber(std::string& out, double value) {
+  if (!std::isfinite(value)) {
+    out += "null";
+    return;
+  }
+  std::array<char, 64> buffer;
+  char* const end = nlohmann::detail::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+}
+
 /// The document text: header fields one per line, one line per bubble and per track sample, so
-/// large files stay readable and diff well. Numbers are nlohmann's shortest exact form.
+/// large files stay readable and diff well. Numbers are nlohmann's shortest exact form; the text is
+/// the same as dumping each sample as a JSON object (`{"t":…,"depth":…,"transfer":[…],
+/// "position":[…]}`), written without building one.
 std::string formatTrackSet(const BubbleTrackSet& set) {
-  std::ostringstream out;
-  out << "{\n  \"format\": " << json(kFormatTag).dump() << ",\n";
-  out << "  \"sample_rate\": " << formatNumber(set.sampleRate) << ",\n";
-  if (set.duration) out << "  \"duration\": " << formatNumber(*set.duration) << ",\n";
-  if (!set.listeners.empty()) out << "  \"listeners\": " << json(set.listeners).dump() << ",\n";
-  out << "  \"bubbles\": [";
+  std::string out;
+  out += "{\n  \"format\": " + json(kFormatTag).dump() + ",\n";
+  out += "  \"sample_rate\": ";
+  appendNumber(out, set.sampleRate);
+  out += ",\n";
+  if (set.duration) {
+    out += "  \"duration\": ";
+    appendNumber(out, *set.duration);
+    out += ",\n";
+  }
+  if (!set.listeners.empty()) out += "  \"listeners\": " + json(set.listeners).dump() + ",\n";
+  out += "  \"bubbles\": [";
   for (std::size_t i = 0; i < set.bubbles.size(); ++i) {
     const BubbleTrack& bubble = set.bubbles[i];
-    out << (i == 0 ? "\n" : ",\n") << "    {\"radius\":" << formatNumber(bubble.radius)
-        << ",\"birth\":" << formatNumber(bubble.birth);
-    if (bubble.amplitude) out << ",\"amplitude\":" << formatNumber(*bubble.amplitude);
+    out += i == 0 ? "\n    {\"radius\":" : ",\n    {\"radius\":";
+    appendNumber(out, bubble.radius);
+    out += ",\"birth\":";
+    appendNumber(out, bubble.birth);
+    if (bubble.amplitude) {
+      out += ",\"amplitude\":";
+      appendNumber(out, *bubble.amplitude);
+    }
     if (!bubble.track.empty()) {
-      out << ",\"track\":[";
+      out += ",\"track\":[";
       for (std::size_t j = 0; j < bubble.track.size(); ++j) {
         const TrackSample& s = bubble.track[j];
-        nlohmann::ordered_json line;
-        line["t"] = s.time;
-        line["depth"] = s.depth;
-        if (!s.transfer.empty()) line["transfer"] = s.transfer;
-        if (s.position) line["position"] = *s.position;
-        out << (j == 0 ? "\n      " : ",\n      ") << line.dump();
+        out += j == 0 ? "\n      {\"t\":" : ",\n      {\"t\":";
+        appendNumber(out, s.time);
+        out += ",\"depth\":";
+        appendNumber(out, s.depth);
+        if (!s.transfer.empty()) {
+          out += ",\"transfer\":[";
+          for (std::size_t k = 0; k < s.transfer.size(); ++k) {
+            if (k > 0) out += ',';
+            appendNumber(out, s.transfer[k]);
+          }
+          out += ']';
+        }
+        if (s.position) {
+          out += ",\"position\":[";
+          for (std::size_t a = 0; a < 3; ++a) {
+            if (a > 0) out += ',';
+            appendNumber(out, (*s.position)[a]);
+          }
+          out += ']';
+        }
+        out += '}';
       }
-      out << "\n    ]";
+      out += "\n    ]";
     }
-    out << "}";
+    out += "}";
   }
-  out << (set.bubbles.empty() ? "]\n}\n" : "\n  ]\n}\n");
-  return out.str();
+  out += set.bubbles.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return out;
 }
 
 }  // namespace
@@ -187,6 +233,9 @@ acoustics::BubbleTrackSet parseBubbleTracks(std::string_view text, const std::st
 
 acoustics::BubbleTrackSet parseBubbleTracks(std::string_view text, const std::string& fileName,
                                             TransferValues transfer) {
+  // The documents fluidsound writes are read in one pass; anything else (and every invalid
+  // document, for its error message) goes through the JSON tree and the validator.
+  if (std::optional<BubbleTrackSet> plain = parsePlainBubbleTracks(text, transfer)) return std::move(*plain);
   const json root = parseJson(text, fileName, DuplicateKeys::LastWins);
   return TrackSetReader(fileName, transfer).read(root);
 }
@@ -211,7 +260,8 @@ void writeBubbleTracks(const std::filesystem::path& path, const acoustics::Bubbl
   // Never write a file that this reader would reject (NaN, a depth below the radius, …); the
   // simulation writes tracks before the transfer stage, so transfer may be absent (all or none).
   try {
-    parseBubbleTracks(text, path.string(), TransferValues::Optional);
+    if (!parsePlainBubbleTracks(text, TransferValues::Optional))
+      parseBubbleTracks(text, path.string(), TransferValues::Optional);
   } catch (const InputError& error) {
     throw std::invalid_argument("cannot write invalid bubble tracks: " + std::string(error.what()));
   }
