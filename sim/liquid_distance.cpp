@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -27,6 +28,9 @@ constexpr int kBucketCells = 4;
 constexpr double kFieldMarginCells = 2.0;
 /// Key width of one bucket of the propagation front [cells²]: a few entries per bucket.
 constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
+/// Cells per task of the whole-grid passes: a pass over this many cells takes tens of µs, far more
+/// than a task costs; below it, waking another thread costs more than it saves.
+constexpr std::size_t kCellsPerTask = std::size_t{1} << 16;
 /// `limit` of a surface cell: below every squared distance, so no propagated point replaces its own.
 constexpr double kNeverReplaced = -1.0;
 
@@ -47,10 +51,15 @@ class SurfaceDistance::NearestFirst {
     Cell cell;
     bool operator<(const Entry& o) const { return key < o.key || (key == o.key && cell.at < o.cell.at); }
   };
-  /// @param width  bucket width [m²]; @param largest  largest key expected [m²] (larger ones share
-  ///               the last bucket)
-  NearestFirst(double width, double largest)
-      : scale_(1.0 / width), first_(static_cast<std::size_t>(largest * scale_) + 2, kNone) {}
+  /// Empties the queue for keys of bucket width `width` [m²] up to `largest` [m²] (larger ones
+  /// share the last bucket), keeping its memory: a queue popped empty has every bucket empty.
+  void reset(double width, double largest) {
+    scale_ = 1.0 / width;
+    first_.assign(static_cast<std::size_t>(largest * scale_) + 2, kNone);
+    pool_.clear();
+    cursor_ = 0;
+    size_ = 0;
+  }
   bool empty() const { return size_ == 0; }
   void push(const Entry& e) {
     const std::size_t b = std::min(static_cast<std::size_t>(e.key * scale_), first_.size() - 1);
@@ -76,16 +85,23 @@ class SurfaceDistance::NearestFirst {
     Entry entry;
     std::uint32_t next;
   };
-  double scale_;
+  double scale_ = 1.0;
   std::vector<std::uint32_t> first_;  ///< first node of each bucket
   std::vector<Node> pool_;
   std::size_t cursor_ = 0, size_ = 0;
 };
 
+SurfaceDistance::SurfaceDistance() : front_(std::make_unique<NearestFirst>()) {}
+
 SurfaceDistance::SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
-                                 double band, double airBand) {
+                                 double band, double airBand)
+    : SurfaceDistance() {
   rebuild(phi, solidNodeDistance, grid, band, airBand);
 }
+
+SurfaceDistance::~SurfaceDistance() = default;
+SurfaceDistance::SurfaceDistance(SurfaceDistance&&) noexcept = default;
+SurfaceDistance& SurfaceDistance::operator=(SurfaceDistance&&) noexcept = default;
 
 void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
                               double band, double airBand) {
@@ -109,8 +125,11 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
     centres_[a].resize(grid.cells[a]);
     for (int i = 0; i < grid.cells[a]; ++i) centres_[a][i] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
   }
+  // Whole-grid passes in tasks of at least kCellsPerTask cells: a small grid is one task, run by
+  // the calling thread without waking another.
+  const int planesPerTask = static_cast<int>(std::max<std::size_t>(1, kCellsPerTask / sk));
   // 0. Phases. A cell is solid when the sum of its 8 nodal solid distances is negative.
-  tbb::parallel_for(tbb::blocked_range<int>(0, nk), [&](const tbb::blocked_range<int>& r) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
     for (int k = r.begin(); k < r.end(); ++k)
       for (int j = 0; j < nj; ++j) {
         const float* const below = &solidNodeDistance(0, j, k);
@@ -135,8 +154,10 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   //    crossing on each axis (intercepts θ_a·h, directions s_a): normal ∝ (s_a/(θ_a h)), distance
   //    d = 1/√(Σ 1/(θ_a h)²), foot = centre + d²·(s_a/(θ_a h)). Each z-plane lists its own, so the
   //    list is in cell order for any thread count.
-  std::vector<std::vector<SurfaceCell>> surfaceOfPlane(nk);
-  tbb::parallel_for(tbb::blocked_range<int>(0, nk), [&](const tbb::blocked_range<int>& r) {
+  std::vector<std::vector<SurfaceCell>>& surfaceOfPlane = surfaceOfPlane_;
+  surfaceOfPlane.resize(nk);
+  for (std::vector<SurfaceCell>& plane : surfaceOfPlane) plane.clear();
+  tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
     for (int k = r.begin(); k < r.end(); ++k)
       for (int j = 0; j < nj; ++j)
         for (int i = 0; i < ni; ++i) {
@@ -189,14 +210,16 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
           surfaceOfPlane[k].push_back({cell, std::sqrt(d2)});
         }
   });
-  std::vector<SurfaceCell> surface;
+  std::vector<SurfaceCell>& surface = surface_;
+  surface.clear();
   for (const std::vector<SurfaceCell>& plane : surfaceOfPlane) surface.insert(surface.end(), plane.begin(), plane.end());
   // 2. Every other cell within the band: the nearest surface point among those its 26 neighbours
   //    hold, settled in order of distance (Dijkstra's order; closest-point propagation, so the
   //    distance is Euclidean to the point found and no upwind error accumulates with depth).
   //    Ties are broken by cell index: the result is deterministic. limit_ holds, per cell, the
   //    squared distance [m²] a new point must be below to replace its own.
-  NearestFirst front(kBucketWidthCells2 * h * h, band * band);
+  NearestFirst& front = *front_;
+  front.reset(kBucketWidthCells2 * h * h, band * band);
   for (const SurfaceCell& s : surface) front.push({s.distance * s.distance, s.cell});
   while (!front.empty()) {
     const auto [key, cell] = front.pop();
@@ -228,9 +251,9 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
       }
   }
   // 3. The sign of the phase; cells beyond the band hold ±band (the band of their side).
-  field_ = Array3f(grid.cells);
+  if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
   float* const out = field_.data();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kCellsPerTask), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t at = r.begin(); at < r.end(); ++at) {
       const double side = isLiquid(at) ? band : airBand;
       const double squared = limit_[at];
@@ -252,7 +275,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   for (const SurfaceCell& s : surface) ++bucketStart_[bucketOf(s.cell) + 1];
   for (std::size_t b = 1; b < bucketStart_.size(); ++b) bucketStart_[b] += bucketStart_[b - 1];
   points_.resize(bucketStart_.back());
-  std::vector<std::size_t> next(bucketStart_.begin(), bucketStart_.end() - 1);
+  std::vector<std::size_t>& next = bucketNext_;
+  next.assign(bucketStart_.begin(), bucketStart_.end() - 1);
   for (const SurfaceCell& s : surface) points_[next[bucketOf(s.cell)]++] = closest_[s.cell.at];
 }
 

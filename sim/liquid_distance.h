@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "sim/array3.h"
@@ -31,7 +32,10 @@ namespace fluidsound::sim {
 /// distances pass through them, and they count as liquid in the sign.
 class SurfaceDistance {
  public:
-  SurfaceDistance() = default;
+  SurfaceDistance();
+  ~SurfaceDistance();
+  SurfaceDistance(SurfaceDistance&&) noexcept;
+  SurfaceDistance& operator=(SurfaceDistance&&) noexcept;
   /// @param phi                the solver's liquid field at cell centres [m]; only its sign and
   ///                           its values at the cells next to the surface are read
   /// @param solidNodeDistance  solid signed distance at the nodes [m]
@@ -86,6 +90,10 @@ class SurfaceDistance {
   std::vector<double> limit_;              ///< squared distance a new point must be below [m²]
   std::vector<Vec3> closest_;              ///< the surface point a cell's distance is measured to [m]
   std::vector<double> centres_[3];         ///< cell-centre coordinate per index, per axis [m]
+  std::vector<std::vector<SurfaceCell>> surfaceOfPlane_;  ///< surface cells found per z-plane
+  std::vector<SurfaceCell> surface_;       ///< all surface cells, in cell order
+  std::vector<std::size_t> bucketNext_;    ///< next free slot per bucket while grouping points
+  std::unique_ptr<NearestFirst> front_;    ///< the propagation front (its memory is reused)
 };
 
 }  // namespace fluidsound::sim
