@@ -26,9 +26,13 @@ class VelocityRange {
   static constexpr double reachCells() { return 2.0; }
 
  private:
+  /// Widens per-block ranges to the blocks within kSpanBlocks along each axis.
+  void widen(std::vector<float>& lo, std::vector<float>& hi);
+
   GridGeometry grid_;
   Index3 blocks_{0, 0, 0};
   std::vector<float> lo_[3], hi_[3];  ///< per component, per block [m/s]
+  std::vector<float> scratchLo_, scratchHi_;  ///< work rows of widen
 };
 
 }  // namespace fluidsound::sim
