@@ -160,18 +160,29 @@ const EntrainmentTag* EntrainmentTagTable::find(std::uint64_t id) const {
   return it != tags_.end() && it->particleId == id ? &*it : nullptr;
 }
 
+bool entrainmentUsesVelocityRange(const BubbleSettings& settings) {
+  return std::isfinite(settings.entrainmentSpeed) && settings.probeCells <= VelocityRange::reachCells();
+}
+
 EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
                                   const BubbleSettings& settings, double time) {
+  validateLiquidState(liquid);
+  // Where the liquid's velocity around a particle stays within entrainmentSpeed of the particle's
+  // own, no probe can pass the speed test: it is skipped unread (the same decisions, faster).
+  std::optional<VelocityRange> range;
+  if (entrainmentUsesVelocityRange(settings)) range.emplace(liquid.velocity, liquid.grid);
+  return detectEntrainment(liquid, previous, settings, time, range ? &*range : nullptr);
+}
+
+EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
+                                  const BubbleSettings& settings, double time, const VelocityRange* range) {
   validateLiquidState(liquid);
   const double h = liquid.grid.cellSize;
   const double band = settings.bandCells * h;
   const double growth = settings.entrainmentDepthCells * h;
   const double probe = settings.probeCells * h;
   const bool speedTest = std::isfinite(settings.entrainmentSpeed);
-  // Where the liquid's velocity around a particle stays within entrainmentSpeed of the particle's
-  // own, no probe can pass the speed test: it is skipped unread (the same decisions, faster).
-  std::optional<VelocityRange> range;
-  if (speedTest && settings.probeCells <= VelocityRange::reachCells()) range.emplace(liquid.velocity, liquid.grid);
+  if (!entrainmentUsesVelocityRange(settings)) range = nullptr;  // a probe beyond its reach
   const double boundBelow = settings.entrainmentSpeed * (1.0 - kSpeedBoundMargin);
   const std::vector<std::uint8_t> beyondBand = beyondBandStencils(liquid.liquidDistance, band);
   const std::size_t n = liquid.particlePositions.size();

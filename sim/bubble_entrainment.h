@@ -11,6 +11,7 @@
 #include "sim/bubble_settings.h"
 #include "sim/grid.h"
 #include "sim/liquid_state.h"
+#include "sim/velocity_range.h"
 
 namespace fluidsound::sim {
 
@@ -83,5 +84,15 @@ struct EntrainmentStep {
 /// @throws std::invalid_argument as validateLiquidState, or for duplicate particle ids among tags
 EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
                                   const BubbleSettings& settings, double time);
+
+/// @brief As above, with the velocity range of `liquid.velocity` built by the caller (the bubble
+///        model builds it while the surface distance is rebuilt); nullptr: no speed test is skipped.
+///        The decisions are the same with or without it.
+EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
+                                  const BubbleSettings& settings, double time, const VelocityRange* range);
+
+/// Whether detectEntrainment can skip speed tests by a VelocityRange with these settings: the test
+/// is on and its probe lies within the range's reach.
+bool entrainmentUsesVelocityRange(const BubbleSettings& settings);
 
 }  // namespace fluidsound::sim

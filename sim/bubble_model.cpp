@@ -6,7 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "sim/cell_interpolation.h"
 #include "sim/particle_seeding.h"
@@ -27,6 +29,10 @@ constexpr double kTimeTolerance = 1e-9;
 /// Cells of depth the surface band holds beyond what the tests read (tagging band + depth growth,
 /// or the largest radius): SurfaceDistance::at needs 2 (its field margin), plus one for safety.
 constexpr double kSurfaceBandMarginCells = 3.0;
+
+/// Live bubbles per task of the motion: a drag solve takes about a microsecond, so a task of this
+/// many outweighs its scheduling.
+constexpr std::size_t kBubblesPerTask = 32;
 
 bool sameTime(double a, double b) { return std::abs(a - b) <= kTimeTolerance * std::max(1.0, std::abs(a)); }
 
@@ -77,46 +83,62 @@ void BubbleModel::addBubble(double radius, double birth, const Vec3& position, d
   live_.push_back(b);
 }
 
-void BubbleModel::advanceLiveBubbles(const LiquidState& liquid, double t, double dt, BubbleStepReport& report) {
+void BubbleModel::moveLiveBubbles(const LiquidState& solverState, double dt) {
+  const GridGeometry& grid = solverState.grid;
+  const bool hasPrevious = sameLayout(previousVelocity_, solverState.velocity);
+  // Each bubble reads the shared fields and writes only its own slot: any thread count gives the
+  // same result. A drag solve takes about a microsecond: tasks of kBubblesPerTask.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, live_.size(), kBubblesPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      LiveBubble& b = live_[i];
+      const double radius = histories_[b.history].radius;
+      const Vec3 x = b.motion.position;
+      LiquidAtBubble at;
+      at.velocity = interpolateVelocity(solverState.velocity, grid, x);
+      if (hasPrevious) {
+        // Du/Dt ≈ (u(x, t + dt) − u(x − u·dt, t))/dt: the change along the liquid's path
+        // (semi-Lagrangian), which includes the advective part u·∇u.
+        const Vec3 back{x[0] - dt * at.velocity[0], x[1] - dt * at.velocity[1], x[2] - dt * at.velocity[2]};
+        const Vec3 before = interpolateVelocity(previousVelocity_, grid, back);
+        for (int a = 0; a < 3; ++a) at.acceleration[a] = (at.velocity[a] - before[a]) / dt;
+      }
+      b.motion = advanceBubble(b.motion, radius, at, gravity_, dt, settings_.rise);
+    }
+  });
+}
+
+void BubbleModel::endLiveBubbles(const LiquidState& liquid, double t, double dt, BubbleStepReport& report) {
   const GridGeometry& grid = liquid.grid;
-  const bool hasPrevious = sameLayout(previousVelocity_, liquid.velocity);
-  enum class Fate : std::uint8_t { Lives, Surface, Outside, Solid };
-  std::vector<Fate> fate(live_.size(), Fate::Lives);
-  std::vector<double> deathTime(live_.size(), 0.0);
-  // Each bubble reads the shared fields and writes only its own slots: any thread count gives
-  // the same result.
-  tbb::parallel_for(std::size_t{0}, live_.size(), [&](std::size_t i) {
-    LiveBubble& b = live_[i];
-    const double radius = histories_[b.history].radius;
-    const Vec3 x = b.motion.position;
-    LiquidAtBubble at;
-    at.velocity = interpolateVelocity(liquid.velocity, grid, x);
-    if (hasPrevious) {
-      // Du/Dt ≈ (u(x, t + dt) − u(x − u·dt, t))/dt: the change along the liquid's path
-      // (semi-Lagrangian), which includes the advective part u·∇u.
-      const Vec3 back{x[0] - dt * at.velocity[0], x[1] - dt * at.velocity[1], x[2] - dt * at.velocity[2]};
-      const Vec3 before = interpolateVelocity(previousVelocity_, grid, back);
-      for (int a = 0; a < 3; ++a) at.acceleration[a] = (at.velocity[a] - before[a]) / dt;
-    }
-    b.motion = advanceBubble(b.motion, radius, at, gravity_, dt, settings_.rise);
-    const Vec3& y = b.motion.position;
-    const double before = b.depth;
-    if (!insideGrid(grid, y)) {
-      fate[i] = Fate::Outside;
-      deathTime[i] = t + dt;
-      return;
-    }
-    if (interpolateNodes(liquid.solidNodeDistance, grid, y) < 0.0f) {
-      fate[i] = Fate::Solid;
-      deathTime[i] = t + dt;
-      return;
-    }
-    b.depth = -interpolateCellCentres(liquid.liquidDistance, grid, y);
-    if (b.depth <= radius) {
-      // The depth crossed the radius during the step: linear in time between the two depths.
-      const double fraction = before > b.depth ? std::clamp((before - radius) / (before - b.depth), 0.0, 1.0) : 1.0;
-      fate[i] = Fate::Surface;
-      deathTime[i] = t + dt * fraction;
+  std::vector<Fate>& fate = fates_;
+  std::vector<double>& deathTime = deathTimes_;
+  fate.assign(live_.size(), Fate::Lives);
+  deathTime.assign(live_.size(), 0.0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, live_.size(), kBubblesPerTask * 16),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      LiveBubble& b = live_[i];
+      const double radius = histories_[b.history].radius;
+      const Vec3& y = b.motion.position;
+      const double before = b.depth;
+      if (!insideGrid(grid, y)) {
+        fate[i] = Fate::Outside;
+        deathTime[i] = t + dt;
+        continue;
+      }
+      if (interpolateNodes(liquid.solidNodeDistance, grid, y) < 0.0f) {
+        fate[i] = Fate::Solid;
+        deathTime[i] = t + dt;
+        continue;
+      }
+      b.depth = -interpolateCellCentres(liquid.liquidDistance, grid, y);
+      if (b.depth <= radius) {
+        // The depth crossed the radius during the step: linear in time between the two depths.
+        const double fraction =
+            before > b.depth ? std::clamp((before - radius) / (before - b.depth), 0.0, 1.0) : 1.0;
+        fate[i] = Fate::Surface;
+        deathTime[i] = t + dt * fraction;
+      }
     }
   });
   std::size_t kept = 0;
@@ -134,17 +156,21 @@ void BubbleModel::advanceLiveBubbles(const LiquidState& liquid, double t, double
   live_.resize(kept);
 }
 
-LiquidState BubbleModel::withTrueDistance(const LiquidState& liquid) {
-  const double h = liquid.grid.cellSize;
+void BubbleModel::rebuildDistance(const LiquidState& solverState) {
+  const double h = solverState.grid.cellSize;
   // Depths are read down to the depth-growth test (or the largest radius); above the surface only
   // the tagging band is read (a particle in the air has no depth to grow, and bubbles are in the
   // liquid).
   const double read = std::max((settings_.bandCells + settings_.entrainmentDepthCells) * h, settings_.maxRadius());
   const double readInAir = settings_.bandCells * h;
-  surface_.rebuild(liquid.liquidDistance, liquid.solidNodeDistance, liquid.grid, read + kSurfaceBandMarginCells * h,
-                   readInAir + kSurfaceBandMarginCells * h);
-  return LiquidState{liquid.particlePositions, liquid.particleVelocities, liquid.particleIds, surface_.field(),
-                     liquid.velocity,          liquid.solidNodeDistance,  liquid.grid};
+  surface_.rebuild(solverState.liquidDistance, solverState.solidNodeDistance, solverState.grid,
+                   read + kSurfaceBandMarginCells * h, readInAir + kSurfaceBandMarginCells * h);
+}
+
+LiquidState BubbleModel::withDistanceField(const LiquidState& solverState) const {
+  return LiquidState{solverState.particlePositions, solverState.particleVelocities, solverState.particleIds,
+                     surface_.field(),              solverState.velocity,           solverState.solidNodeDistance,
+                     solverState.grid};
 }
 
 BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, double dt) {
@@ -156,12 +182,22 @@ BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, dou
   if (!std::isfinite(t)) rejectTime("BubbleModel::step: t", t, stateTime_);
   if (steps_ > 0 && !sameTime(t, stateTime_)) rejectTime("BubbleModel::step: t", t, stateTime_);
   validateLiquidState(solverState);
-  const LiquidState liquid = withTrueDistance(solverState);
+  // The surface distance (one serial propagation) is rebuilt in a task while this thread moves
+  // the bubbles and bounds the grid velocity, which read only the solver's state; with one thread
+  // the task runs at wait(). Either way each result is computed as alone.
+  tbb::task_group distance;
+  distance.run([&] { rebuildDistance(solverState); });
+  // (1) Move the bubbles made in earlier steps.
+  moveLiveBubbles(solverState, dt);
+  if (entrainmentUsesVelocityRange(settings_)) range_.emplace(solverState.velocity, solverState.grid);
+  else range_.reset();
+  distance.wait();
+  const LiquidState liquid = withDistanceField(solverState);
   BubbleStepReport report;
-  // (1) Move and end the bubbles made in earlier steps.
-  advanceLiveBubbles(liquid, t, dt, report);
+  // ... and end those that reached the surface, left the grid or entered a solid.
+  endLiveBubbles(liquid, t, dt, report);
   // (2) Tags and seeds at the end of the step.
-  EntrainmentStep entrainment = detectEntrainment(liquid, tags_, settings_, t + dt);
+  EntrainmentStep entrainment = detectEntrainment(liquid, tags_, settings_, t + dt, range_ ? &*range_ : nullptr);
   report.taggedParticles = entrainment.taggedParticles;
   report.newSeeds = entrainment.newSeeds;
   report.seeds = entrainment.seeds.size();
@@ -201,7 +237,8 @@ bool BubbleModel::insertBubble(double radius, const Vec3& position, double birth
     if (!std::isfinite(c)) throw std::invalid_argument("BubbleModel::insertBubble: position must be finite");
   if (!std::isfinite(birth)) throw std::invalid_argument("BubbleModel::insertBubble: birth must be finite");
   validateLiquidState(solverState);
-  const LiquidState liquid = withTrueDistance(solverState);
+  rebuildDistance(solverState);
+  const LiquidState liquid = withDistanceField(solverState);
   if (!insideGrid(liquid.grid, position)) return false;
   if (interpolateNodes(liquid.solidNodeDistance, liquid.grid, position) < radius) return false;
   const double depth = -interpolateCellCentres(liquid.liquidDistance, liquid.grid, position);

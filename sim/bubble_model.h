@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sim/bubble_entrainment.h"
@@ -16,6 +17,7 @@
 #include "sim/liquid_distance.h"
 #include "sim/liquid_state.h"
 #include "sim/mac_velocity.h"
+#include "sim/velocity_range.h"
 
 namespace fluidsound::sim {
 
@@ -105,10 +107,18 @@ class BubbleModel {
     BubbleMotion motion;
     double depth = 0.0;       ///< −(band field) at the centre at the end of the last step [m]
   };
-  void advanceLiveBubbles(const LiquidState& liquid, double t, double dt, BubbleStepReport& report);
+  /// Moves every live bubble over the step (bubble_rise.h) in the solver's grid velocity.
+  void moveLiveBubbles(const LiquidState& solverState, double dt);
+  /// Ends the moved bubbles whose depth (in liquid's true distance) reached their radius, that
+  /// left the grid or entered a solid; updates the others' depth.
+  void endLiveBubbles(const LiquidState& liquid, double t, double dt, BubbleStepReport& report);
   void addBubble(double radius, double birth, const Vec3& position, double depth, const LiquidState& liquid);
-  /// Rebuilds surface_ from the solver's φ; returns `liquid` with φ replaced by surface_.field().
-  LiquidState withTrueDistance(const LiquidState& liquid);
+  /// What happened to a live bubble in endLiveBubbles.
+  enum class Fate : std::uint8_t { Lives, Surface, Outside, Solid };
+  /// Rebuilds surface_ from the solver's φ.
+  void rebuildDistance(const LiquidState& solverState);
+  /// `solverState` with φ replaced by surface_.field().
+  LiquidState withDistanceField(const LiquidState& solverState) const;
 
   BubbleSettings settings_;
   BubbleSizeSampler sizes_;
@@ -123,6 +133,9 @@ class BubbleModel {
   SpawnCounts totals_;
   std::vector<LiveBubble> live_;  ///< in creation order
   std::vector<BubbleHistory> histories_;
+  std::optional<VelocityRange> range_;   ///< the grid velocity's range, rebuilt each step
+  std::vector<Fate> fates_;              ///< per live bubble, work array of endLiveBubbles
+  std::vector<double> deathTimes_;       ///< per live bubble [s], work array of endLiveBubbles
 };
 
 }  // namespace fluidsound::sim
