@@ -128,24 +128,35 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   // Whole-grid passes in tasks of at least kCellsPerTask cells: a small grid is one task, run by
   // the calling thread without waking another.
   const int planesPerTask = static_cast<int>(std::max<std::size_t>(1, kCellsPerTask / sk));
-  // 0. Phases. A cell is solid when the sum of its 8 nodal solid distances is negative.
-  tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
-    for (int k = r.begin(); k < r.end(); ++k)
-      for (int j = 0; j < nj; ++j) {
-        const float* const below = &solidNodeDistance(0, j, k);
-        const float* const above = &solidNodeDistance(0, j + 1, k);
-        const float* const behindBelow = &solidNodeDistance(0, j, k + 1);
-        const float* const behindAbove = &solidNodeDistance(0, j + 1, k + 1);
-        const float* const row = &phi(0, j, k);
-        std::uint8_t* const out = &phase_[k * sk + j * sj];
-        for (int i = 0; i < ni; ++i) {
-          // The 8 nodes in the order (x, then y, then z) of the solver's extendIntoSolids rule.
-          const float sum = below[i] + below[i + 1] + above[i] + above[i + 1] + behindBelow[i] + behindBelow[i + 1] +
-                            behindAbove[i] + behindAbove[i + 1];
-          out[i] = sum < 0.0f ? kSolid : (row[i] < 0.0f ? kLiquid : kAir);
+  // 0. Phases. A cell is solid when the sum of its 8 nodal solid distances is negative; the solid
+  //    cells are found again only when the nodal distances change (static solids: never).
+  const std::vector<float>& nodes = solidNodeDistance.values();
+  if (nodes != solidNodes_ || solidCells_.size() != n) {
+    solidNodes_ = nodes;
+    solidCells_.resize(n);
+    tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
+      for (int k = r.begin(); k < r.end(); ++k)
+        for (int j = 0; j < nj; ++j) {
+          const float* const below = &solidNodeDistance(0, j, k);
+          const float* const above = &solidNodeDistance(0, j + 1, k);
+          const float* const behindBelow = &solidNodeDistance(0, j, k + 1);
+          const float* const behindAbove = &solidNodeDistance(0, j + 1, k + 1);
+          std::uint8_t* const out = &solidCells_[k * sk + j * sj];
+          for (int i = 0; i < ni; ++i) {
+            // The 8 nodes in the order (x, then y, then z) of the solver's extendIntoSolids rule.
+            const float sum = below[i] + below[i + 1] + above[i] + above[i + 1] + behindBelow[i] +
+                              behindBelow[i + 1] + behindAbove[i] + behindAbove[i + 1];
+            out[i] = sum < 0.0f;
+          }
         }
-      }
-  });
+    });
+  }
+  {
+    const float* const value = phi.data();
+    const std::uint8_t* const solid = solidCells_.data();
+    std::uint8_t* const out = phase_.data();
+    for (std::size_t at = 0; at < n; ++at) out[at] = solid[at] ? kSolid : (value[at] < 0.0f ? kLiquid : kAir);
+  }
   const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
   // Cells within the band take their first point when it is within their side's band.
   const double band2[2] = {airBand * airBand, band * band};  // by isLiquid
@@ -157,13 +168,32 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   std::vector<std::vector<SurfaceCell>>& surfaceOfPlane = surfaceOfPlane_;
   surfaceOfPlane.resize(nk);
   for (std::vector<SurfaceCell>& plane : surfaceOfPlane) plane.clear();
+  solidRow_.assign(ni, kSolid);  // the neighbours of a row at the grid's edge
   tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
+    std::vector<std::uint8_t> crossing(ni);
     for (int k = r.begin(); k < r.end(); ++k)
-      for (int j = 0; j < nj; ++j)
+      for (int j = 0; j < nj; ++j) {
+        const std::size_t rowAt = k * sk + j * sj;
+        const std::uint8_t* const row = &phase_[rowAt];
+        const std::uint8_t* const down = j > 0 ? row - sj : solidRow_.data();
+        const std::uint8_t* const up = j + 1 < nj ? row + sj : solidRow_.data();
+        const std::uint8_t* const back = k > 0 ? row - sk : solidRow_.data();
+        const std::uint8_t* const ahead = k + 1 < nk ? row + sk : solidRow_.data();
+        double* const limit = &limit_[rowAt];
+        for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
+        // Most cells are not next to the surface: first a test without branches on the six
+        // neighbours (a neighbour outside the grid reads as solid, which makes no crossing; a
+        // solid cell makes none either).
         for (int i = 0; i < ni; ++i) {
-          const std::size_t at = k * sk + j * sj + i;
-          limit_[at] = firstLimit[isLiquid(at)];
-          if (phase_[at] == kSolid) continue;
+          const std::uint8_t other = row[i] == kAir ? kLiquid : kAir;
+          const std::uint8_t left = i > 0 ? row[i - 1] : std::uint8_t{kSolid};
+          const std::uint8_t right = i + 1 < ni ? row[i + 1] : std::uint8_t{kSolid};
+          crossing[i] = (row[i] != kSolid) & ((left == other) | (right == other) | (down[i] == other) |
+                                              (up[i] == other) | (back[i] == other) | (ahead[i] == other));
+        }
+        for (int i = 0; i < ni; ++i) {
+          if (!crossing[i]) continue;
+          const std::size_t at = rowAt + i;
           const int index[3] = {i, j, k}, count[3] = {ni, nj, nk};
           const std::size_t stride[3] = {1, sj, sk};
           // A crossing on an axis: a neighbour of the other phase that is not solid.
@@ -172,14 +202,6 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             const std::size_t other = step < 0 ? at - stride[a] : at + stride[a];
             return phase_[other] != kSolid && isLiquid(other) != isLiquid(at);
           };
-          // Most cells are not next to the surface: first a test without branches on the six
-          // neighbours (a neighbour outside the grid reads as solid, which makes no crossing).
-          const std::uint8_t other = phase_[at] == kAir ? kLiquid : kAir;
-          const auto phaseAt = [&](bool inside, std::size_t o) { return inside ? phase_[o] : std::uint8_t{kSolid}; };
-          const bool crossing = (phaseAt(i > 0, at - 1) == other) | (phaseAt(i + 1 < ni, at + 1) == other) |
-                                (phaseAt(j > 0, at - sj) == other) | (phaseAt(j + 1 < nj, at + sj) == other) |
-                                (phaseAt(k > 0, at - sk) == other) | (phaseAt(k + 1 < nk, at + sk) == other);
-          if (!crossing) continue;
           const double here = phi.data()[at];
           double inverse[3] = {0.0, 0.0, 0.0};  // s_a/(θ_a h) [1/m]
           bool onSurface = false;
@@ -209,6 +231,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
           for (int a = 0; a < 3; ++a) closest_[at][a] = c[a] + d2 * inverse[a];
           surfaceOfPlane[k].push_back({cell, std::sqrt(d2)});
         }
+      }
   });
   std::vector<SurfaceCell>& surface = surface_;
   surface.clear();
@@ -221,6 +244,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   NearestFirst& front = *front_;
   front.reset(kBucketWidthCells2 * h * h, band * band);
   for (const SurfaceCell& s : surface) front.push({s.distance * s.distance, s.cell});
+  touched_.clear();
   while (!front.empty()) {
     const auto [key, cell] = front.pop();
     if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at]) continue;  // reached closer since
@@ -245,22 +269,27 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
           if (!(e2 < limit_[other])) continue;  // also the cell itself: its own point, e2 = limit
           limit_[other] = e2;
           closest_[other] = p;
+          touched_.push_back(static_cast<std::uint32_t>(other));
           front.push({e2, {static_cast<std::uint32_t>(other), static_cast<std::int16_t>(cell.i + dx),
                            static_cast<std::int16_t>(cell.j + dy), static_cast<std::int16_t>(cell.k + dz)}});
         }
       }
   }
   // 3. The sign of the phase; cells beyond the band hold ±band (the band of their side).
+  //    Cells no point reached keep their first limit, beyond their side's band: ±band for all
+  //    cells first, then the cells the front reached.
   if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
   float* const out = field_.data();
+  const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by isLiquid
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kCellsPerTask), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t at = r.begin(); at < r.end(); ++at) {
-      const double side = isLiquid(at) ? band : airBand;
-      const double squared = limit_[at];
-      const double magnitude = squared == kNeverReplaced ? kUnknown : (squared <= band2[isLiquid(at)] ? std::sqrt(squared) : side);
-      out[at] = static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
-    }
+    for (std::size_t at = r.begin(); at < r.end(); ++at) out[at] = beyond[phase_[at] != kAir];
   });
+  for (const std::uint32_t at : touched_) {
+    const double side = isLiquid(at) ? band : airBand;
+    const double squared = limit_[at];
+    const double magnitude = squared <= band2[isLiquid(at)] ? std::sqrt(squared) : side;
+    out[at] = static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
+  }
   for (const SurfaceCell& s : surface) {  // surface cells: the distance to their own point
     const double magnitude = std::min(s.distance, isLiquid(s.cell.at) ? band : airBand);
     out[s.cell.at] = static_cast<float>(isLiquid(s.cell.at) ? -magnitude : magnitude);

@@ -87,6 +87,10 @@ class SurfaceDistance {
   std::vector<std::size_t> bucketStart_;   ///< points of bucket b: [start[b], start[b + 1])
   // Per-cell work arrays of rebuild, kept between rebuilds.
   std::vector<std::uint8_t> phase_;
+  std::vector<float> solidNodes_;          ///< the nodal solid distances solidCells_ was found from [m]
+  std::vector<std::uint8_t> solidCells_;   ///< 1 for a cell inside a solid
+  std::vector<std::uint8_t> solidRow_;     ///< a row of solid phases: the neighbours beyond the grid
+  std::vector<std::uint32_t> touched_;     ///< cells the front reached (repeats possible)
   std::vector<double> limit_;              ///< squared distance a new point must be below [m²]
   std::vector<Vec3> closest_;              ///< the surface point a cell's distance is measured to [m]
   std::vector<double> centres_[3];         ///< cell-centre coordinate per index, per axis [m]
