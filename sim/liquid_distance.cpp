@@ -112,18 +112,25 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const std::size_t sj = static_cast<std::size_t>(ni), sk = static_cast<std::size_t>(ni) * nj;
   const std::size_t n = sk * nk;
-  if (n >= std::numeric_limits<std::uint32_t>::max() || std::max({ni, nj, nk}) > std::numeric_limits<std::int16_t>::max())
+  // The work arrays limit_ and closest_ are padded by one cell on each side.
+  const std::size_t psj = static_cast<std::size_t>(ni) + 2, psk = psj * (nj + 2), pn = psk * (nk + 2);
+  const auto padded = [&](int i, int j, int k) { return (k + 1) * psk + (j + 1) * psj + (i + 1); };
+  if (pn >= std::numeric_limits<std::uint32_t>::max() ||
+      std::max({ni, nj, nk}) >= std::numeric_limits<std::int16_t>::max())
     throw std::invalid_argument("SurfaceDistance: more cells than 32-bit indices (16-bit per axis) address");
+  const bool newLayout = grid_.cells != grid.cells || limit_.size() != pn;
   grid_ = grid;
   band_ = band;
   airBand_ = airBand;
   const double h = grid.cellSize;
   phase_.resize(n);
-  limit_.resize(n);
-  closest_.resize(n);
+  if (newLayout) {
+    limit_.assign(pn, kNeverReplaced);  // the padding keeps it: only grid cells are written
+    closest_.assign(pn, Vec3{0.0, 0.0, 0.0});
+  }
   for (int a = 0; a < 3; ++a) {
-    centres_[a].resize(grid.cells[a]);
-    for (int i = 0; i < grid.cells[a]; ++i) centres_[a][i] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
+    centres_[a].resize(grid.cells[a] + 2);
+    for (int i = -1; i <= grid.cells[a]; ++i) centres_[a][i + 1] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
   }
   // Whole-grid passes in tasks of at least kCellsPerTask cells: a small grid is one task, run by
   // the calling thread without waking another.
@@ -179,7 +186,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         const std::uint8_t* const up = j + 1 < nj ? row + sj : solidRow_.data();
         const std::uint8_t* const back = k > 0 ? row - sk : solidRow_.data();
         const std::uint8_t* const ahead = k + 1 < nk ? row + sk : solidRow_.data();
-        double* const limit = &limit_[rowAt];
+        double* const limit = &limit_[padded(0, j, k)];
         for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
         // Most cells are not next to the surface: first a test without branches on the six
         // neighbours (a neighbour outside the grid reads as solid, which makes no crossing; a
@@ -218,17 +225,17 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             if (nearest <= 0.0) onSurface = true;
             else inverse[a] = side / nearest;
           }
-          const Vec3 c{centres_[0][i], centres_[1][j], centres_[2][k]};
-          const Cell cell{static_cast<std::uint32_t>(at), static_cast<std::int16_t>(i), static_cast<std::int16_t>(j),
-                          static_cast<std::int16_t>(k)};
-          limit_[at] = kNeverReplaced;
+          const Vec3 c{centres_[0][i + 1], centres_[1][j + 1], centres_[2][k + 1]};
+          const Cell cell{static_cast<std::uint32_t>(padded(i, j, k)), static_cast<std::uint32_t>(at),
+                          static_cast<std::int16_t>(i), static_cast<std::int16_t>(j), static_cast<std::int16_t>(k)};
+          limit_[cell.at] = kNeverReplaced;
           if (onSurface) {
-            closest_[at] = c;
+            closest_[cell.at] = c;
             surfaceOfPlane[k].push_back({cell, 0.0});
             continue;
           }
           const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] + inverse[2] * inverse[2]);
-          for (int a = 0; a < 3; ++a) closest_[at][a] = c[a] + d2 * inverse[a];
+          for (int a = 0; a < 3; ++a) closest_[cell.at][a] = c[a] + d2 * inverse[a];
           surfaceOfPlane[k].push_back({cell, std::sqrt(d2)});
         }
       }
@@ -250,28 +257,32 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
     if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at]) continue;  // reached closer since
     const Vec3 p = closest_[cell.at];
     // Squared distance from p to the 26 neighbours' centres: per axis first, summed in the order
-    // x, y, z of the formula (x² + y²) + z², so each is rounded as written out in full.
-    const int lo[3] = {cell.i > 0 ? -1 : 0, cell.j > 0 ? -1 : 0, cell.k > 0 ? -1 : 0};
-    const int hi[3] = {cell.i < ni - 1 ? 1 : 0, cell.j < nj - 1 ? 1 : 0, cell.k < nk - 1 ? 1 : 0};
+    // x, y, z of the formula (x² + y²) + z², so each is rounded as written out in full. The
+    // padding's limit is below every distance: neighbours beyond the grid are never taken.
     const int index[3] = {cell.i, cell.j, cell.k};
     double axis[3][3];
     for (int a = 0; a < 3; ++a)
-      for (int d = lo[a]; d <= hi[a]; ++d) {
-        const double e = centres_[a][index[a] + d] - p[a];
-        axis[a][d + 1] = e * e;
+      for (int d = 0; d < 3; ++d) {
+        const double e = centres_[a][index[a] + d] - p[a];  // padded: index + 1 + (d − 1)
+        axis[a][d] = e * e;
       }
-    for (int dz = lo[2]; dz <= hi[2]; ++dz)
-      for (int dy = lo[1]; dy <= hi[1]; ++dy) {
-        const std::size_t row = cell.at + static_cast<std::ptrdiff_t>(dz) * sk + static_cast<std::ptrdiff_t>(dy) * sj;
-        for (int dx = lo[0]; dx <= hi[0]; ++dx) {
-          const std::size_t other = row + dx;
-          const double e2 = (axis[0][dx + 1] + axis[1][dy + 1]) + axis[2][dz + 1];
-          if (!(e2 < limit_[other])) continue;  // also the cell itself: its own point, e2 = limit
-          limit_[other] = e2;
-          closest_[other] = p;
-          touched_.push_back(static_cast<std::uint32_t>(other));
-          front.push({e2, {static_cast<std::uint32_t>(other), static_cast<std::int16_t>(cell.i + dx),
-                           static_cast<std::int16_t>(cell.j + dy), static_cast<std::int16_t>(cell.k + dz)}});
+    for (int dz = 0; dz < 3; ++dz)
+      for (int dy = 0; dy < 3; ++dy) {
+        const std::size_t row = cell.at + (dz - 1) * static_cast<std::ptrdiff_t>(psk) +
+                                (dy - 1) * static_cast<std::ptrdiff_t>(psj) - 1;
+        const std::size_t gridRow = cell.grid + (dz - 1) * static_cast<std::ptrdiff_t>(sk) +
+                                    (dy - 1) * static_cast<std::ptrdiff_t>(sj) - 1;
+        const double yz = axis[1][dy];
+        for (int dx = 0; dx < 3; ++dx) {
+          const double e2 = (axis[0][dx] + yz) + axis[2][dz];
+          if (!(e2 < limit_[row + dx])) continue;  // also the cell itself: its own point, e2 = limit
+          limit_[row + dx] = e2;
+          closest_[row + dx] = p;
+          const Cell reached{static_cast<std::uint32_t>(row + dx), static_cast<std::uint32_t>(gridRow + dx),
+                             static_cast<std::int16_t>(cell.i + dx - 1), static_cast<std::int16_t>(cell.j + dy - 1),
+                             static_cast<std::int16_t>(cell.k + dz - 1)};
+          touched_.push_back(reached);
+          front.push({e2, reached});
         }
       }
   }
@@ -284,15 +295,16 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kCellsPerTask), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t at = r.begin(); at < r.end(); ++at) out[at] = beyond[phase_[at] != kAir];
   });
-  for (const std::uint32_t at : touched_) {
+  for (const Cell& c : touched_) {
+    const std::size_t at = c.grid;
     const double side = isLiquid(at) ? band : airBand;
-    const double squared = limit_[at];
+    const double squared = limit_[c.at];
     const double magnitude = squared <= band2[isLiquid(at)] ? std::sqrt(squared) : side;
     out[at] = static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
   }
   for (const SurfaceCell& s : surface) {  // surface cells: the distance to their own point
-    const double magnitude = std::min(s.distance, isLiquid(s.cell.at) ? band : airBand);
-    out[s.cell.at] = static_cast<float>(isLiquid(s.cell.at) ? -magnitude : magnitude);
+    const double magnitude = std::min(s.distance, isLiquid(s.cell.grid) ? band : airBand);
+    out[s.cell.grid] = static_cast<float>(isLiquid(s.cell.grid) ? -magnitude : magnitude);
   }
   // 4. The surface points, grouped by bucket (in cell order within a bucket) for at().
   for (int a = 0; a < 3; ++a) buckets_[a] = (grid.cells[a] + kBucketCells - 1) / kBucketCells;
