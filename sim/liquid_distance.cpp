@@ -55,7 +55,8 @@ class SurfaceDistance::NearestFirst {
   /// share the last bucket), keeping its memory: a queue popped empty has every bucket empty.
   void reset(double width, double largest) {
     scale_ = 1.0 / width;
-    first_.assign(static_cast<std::size_t>(largest * scale_) + 2, kNone);
+    const std::size_t buckets = static_cast<std::size_t>(largest * scale_) + 2;
+    if (first_.size() != buckets || size_ != 0) first_.assign(buckets, kNone);
     pool_.clear();
     cursor_ = 0;
     size_ = 0;
@@ -158,11 +159,19 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         }
     });
   }
-  {
-    const float* const value = phi.data();
-    const std::uint8_t* const solid = solidCells_.data();
-    std::uint8_t* const out = phase_.data();
-    for (std::size_t at = 0; at < n; ++at) out[at] = solid[at] ? kSolid : (value[at] < 0.0f ? kLiquid : kAir);
+  // Per row of cells (j, k), which phases it holds (bit 1 << phase): rows of one phase whose
+  // neighbour rows hold no other phase have no surface cell, and are passed over below.
+  rowPhases_.resize(static_cast<std::size_t>(nj) * nk);
+  for (std::size_t row = 0; row < rowPhases_.size(); ++row) {
+    const float* const value = phi.data() + row * sj;
+    const std::uint8_t* const solid = solidCells_.data() + row * sj;
+    std::uint8_t* const out = phase_.data() + row * sj;
+    std::uint8_t held = 0;
+    for (int i = 0; i < ni; ++i) {
+      out[i] = solid[i] ? kSolid : (value[i] < 0.0f ? kLiquid : kAir);
+      held |= static_cast<std::uint8_t>(1u << out[i]);
+    }
+    rowPhases_[row] = held;
   }
   const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
   // Cells within the band take their first point when it is within their side's band.
@@ -187,7 +196,19 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         const std::uint8_t* const back = k > 0 ? row - sk : solidRow_.data();
         const std::uint8_t* const ahead = k + 1 < nk ? row + sk : solidRow_.data();
         double* const limit = &limit_[padded(0, j, k)];
-        for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
+        const std::size_t rowIndex = static_cast<std::size_t>(k) * nj + j;
+        const std::uint8_t held = rowPhases_[rowIndex];
+        if (held == 1u << kAir || held == 1u << kLiquid) std::fill(limit, limit + ni, firstLimit[held != 1u << kAir]);
+        else
+          for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
+        // A surface cell needs air and liquid in its row or the four rows beside it.
+        std::uint8_t nearby = held;
+        if (j > 0) nearby |= rowPhases_[rowIndex - 1];
+        if (j + 1 < nj) nearby |= rowPhases_[rowIndex + 1];
+        if (k > 0) nearby |= rowPhases_[rowIndex - nj];
+        if (k + 1 < nk) nearby |= rowPhases_[rowIndex + nj];
+        constexpr std::uint8_t kAirAndLiquid = (1u << kAir) | (1u << kLiquid);
+        if ((nearby & kAirAndLiquid) != kAirAndLiquid) continue;
         // Most cells are not next to the surface: first a test without branches on the six
         // neighbours (a neighbour outside the grid reads as solid, which makes no crossing; a
         // solid cell makes none either).

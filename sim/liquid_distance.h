@@ -91,6 +91,7 @@ class SurfaceDistance {
   std::vector<std::uint8_t> phase_;
   std::vector<float> solidNodes_;          ///< the nodal solid distances solidCells_ was found from [m]
   std::vector<std::uint8_t> solidCells_;   ///< 1 for a cell inside a solid
+  std::vector<std::uint8_t> rowPhases_;    ///< per row of cells (j, k): bit 1 << phase for each phase it holds
   std::vector<std::uint8_t> solidRow_;     ///< a row of solid phases: the neighbours beyond the grid
   std::vector<Cell> touched_;              ///< cells the front reached (repeats possible)
   // limit_ and closest_ cover the grid and one layer of cells around it (whose limit is below every
