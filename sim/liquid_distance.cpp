@@ -49,6 +49,7 @@ class SurfaceDistance::NearestFirst {
   struct Entry {
     double key;  ///< [m²]
     Cell cell;
+    Vec3 point;  ///< the surface point the key is the squared distance to [m]
     bool operator<(const Entry& o) const { return key < o.key || (key == o.key && cell.at < o.cell.at); }
   };
   /// Empties the queue for keys of bucket width `width` [m²] up to `largest` [m²] (larger ones
@@ -113,7 +114,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const std::size_t sj = static_cast<std::size_t>(ni), sk = static_cast<std::size_t>(ni) * nj;
   const std::size_t n = sk * nk;
-  // The work arrays limit_ and closest_ are padded by one cell on each side.
+  // The work array limit_ is padded by one cell on each side.
   const std::size_t psj = static_cast<std::size_t>(ni) + 2, psk = psj * (nj + 2), pn = psk * (nk + 2);
   const auto padded = [&](int i, int j, int k) { return (k + 1) * psk + (j + 1) * psj + (i + 1); };
   if (pn >= std::numeric_limits<std::uint32_t>::max() ||
@@ -127,7 +128,6 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   phase_.resize(n);
   if (newLayout) {
     limit_.assign(pn, kNeverReplaced);  // the padding keeps it: only grid cells are written
-    closest_.assign(pn, Vec3{0.0, 0.0, 0.0});
   }
   for (int a = 0; a < 3; ++a) {
     centres_[a].resize(grid.cells[a] + 2);
@@ -251,13 +251,13 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
                           static_cast<std::int16_t>(i), static_cast<std::int16_t>(j), static_cast<std::int16_t>(k)};
           limit_[cell.at] = kNeverReplaced;
           if (onSurface) {
-            closest_[cell.at] = c;
-            surfaceOfPlane[k].push_back({cell, 0.0});
+            surfaceOfPlane[k].push_back({cell, 0.0, c});
             continue;
           }
           const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] + inverse[2] * inverse[2]);
-          for (int a = 0; a < 3; ++a) closest_[cell.at][a] = c[a] + d2 * inverse[a];
-          surfaceOfPlane[k].push_back({cell, std::sqrt(d2)});
+          Vec3 foot;
+          for (int a = 0; a < 3; ++a) foot[a] = c[a] + d2 * inverse[a];
+          surfaceOfPlane[k].push_back({cell, std::sqrt(d2), foot});
         }
       }
   });
@@ -271,12 +271,13 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   //    squared distance [m²] a new point must be below to replace its own.
   NearestFirst& front = *front_;
   front.reset(kBucketWidthCells2 * h * h, band * band);
-  for (const SurfaceCell& s : surface) front.push({s.distance * s.distance, s.cell});
+  for (const SurfaceCell& s : surface) front.push({s.distance * s.distance, s.cell, s.point});
   touched_.clear();
   while (!front.empty()) {
-    const auto [key, cell] = front.pop();
+    // An entry that is not stale is the cell's latest (keys only decrease), so its point is the
+    // cell's closest point.
+    const auto [key, cell, p] = front.pop();
     if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at]) continue;  // reached closer since
-    const Vec3 p = closest_[cell.at];
     // Squared distance from p to the 26 neighbours' centres: per axis first, summed in the order
     // x, y, z of the formula (x² + y²) + z², so each is rounded as written out in full. The
     // padding's limit is below every distance: neighbours beyond the grid are never taken.
@@ -298,12 +299,11 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
           const double e2 = (axis[0][dx] + yz) + axis[2][dz];
           if (!(e2 < limit_[row + dx])) continue;  // also the cell itself: its own point, e2 = limit
           limit_[row + dx] = e2;
-          closest_[row + dx] = p;
           const Cell reached{static_cast<std::uint32_t>(row + dx), static_cast<std::uint32_t>(gridRow + dx),
                              static_cast<std::int16_t>(cell.i + dx - 1), static_cast<std::int16_t>(cell.j + dy - 1),
                              static_cast<std::int16_t>(cell.k + dz - 1)};
           touched_.push_back(reached);
-          front.push({e2, reached});
+          front.push({e2, reached, p});
         }
       }
   }
@@ -339,7 +339,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   points_.resize(bucketStart_.back());
   std::vector<std::size_t>& next = bucketNext_;
   next.assign(bucketStart_.begin(), bucketStart_.end() - 1);
-  for (const SurfaceCell& s : surface) points_[next[bucketOf(s.cell)]++] = closest_[s.cell.at];
+  for (const SurfaceCell& s : surface) points_[next[bucketOf(s.cell)]++] = s.point;
 }
 
 double SurfaceDistance::nearestSurfacePoint(const Vec3& p) const {

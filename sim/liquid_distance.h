@@ -67,17 +67,18 @@ class SurfaceDistance {
  private:
   /// Distance [m] from p to the nearest surface point, by rings of buckets around p's bucket.
   double nearestSurfacePoint(const Vec3& p) const;
-  /// A cell: its index in the padded work arrays (limit_, closest_; in the same order as the
+  /// A cell: its index in the padded work array limit_ (in the same order as the
   /// grid's), its linear index in the grid, and its indices per axis.
   struct Cell {
     std::uint32_t at;
     std::uint32_t grid;
     std::int16_t i, j, k;
   };
-  /// A cell next to the surface and the distance [m] to its surface point.
+  /// A cell next to the surface, the distance [m] to its surface point, and the point [m].
   struct SurfaceCell {
     Cell cell;
     double distance;
+    Vec3 point;
   };
   class NearestFirst;
 
@@ -94,10 +95,9 @@ class SurfaceDistance {
   std::vector<std::uint8_t> rowPhases_;    ///< per row of cells (j, k): bit 1 << phase for each phase it holds
   std::vector<std::uint8_t> solidRow_;     ///< a row of solid phases: the neighbours beyond the grid
   std::vector<Cell> touched_;              ///< cells the front reached (repeats possible)
-  // limit_ and closest_ cover the grid and one layer of cells around it (whose limit is below every
-  // distance, so that they are never reached): the propagation needs no test at the grid's edges.
+  // limit_ covers the grid and one layer of cells around it (whose limit is below every distance,
+  // so that they are never reached): the propagation needs no test at the grid's edges.
   std::vector<double> limit_;              ///< squared distance a new point must be below [m²]
-  std::vector<Vec3> closest_;              ///< the surface point a cell's distance is measured to [m]
   std::vector<double> centres_[3];         ///< cell-centre coordinate per index + 1 (padded), per axis [m]
   std::vector<std::vector<SurfaceCell>> surfaceOfPlane_;  ///< surface cells found per z-plane
   std::vector<SurfaceCell> surface_;       ///< all surface cells, in cell order
