@@ -2,6 +2,7 @@
 #include "sim/liquid_distance.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -288,24 +289,34 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         const double e = centres_[a][index[a] + d] - p[a];  // padded: index + 1 + (d − 1)
         axis[a][d] = e * e;
       }
+    // First the 27 distances and which of them beat their cell's limit (one bit each, no branch:
+    // a point improves about one neighbour per pop), then the cells they improve. The neighbours
+    // are distinct cells, so testing all before updating any gives the same updates.
+    double e2[27];
+    std::uint32_t improves = 0;
     for (int dz = 0; dz < 3; ++dz)
       for (int dy = 0; dy < 3; ++dy) {
-        const std::size_t row = cell.at + (dz - 1) * static_cast<std::ptrdiff_t>(psk) +
-                                (dy - 1) * static_cast<std::ptrdiff_t>(psj) - 1;
-        const std::size_t gridRow = cell.grid + (dz - 1) * static_cast<std::ptrdiff_t>(sk) +
-                                    (dy - 1) * static_cast<std::ptrdiff_t>(sj) - 1;
+        const double* const limit = &limit_[cell.at + (dz - 1) * static_cast<std::ptrdiff_t>(psk) +
+                                            (dy - 1) * static_cast<std::ptrdiff_t>(psj) - 1];
         const double yz = axis[1][dy];
         for (int dx = 0; dx < 3; ++dx) {
-          const double e2 = (axis[0][dx] + yz) + axis[2][dz];
-          if (!(e2 < limit_[row + dx])) continue;  // also the cell itself: its own point, e2 = limit
-          limit_[row + dx] = e2;
-          const Cell reached{static_cast<std::uint32_t>(row + dx), static_cast<std::uint32_t>(gridRow + dx),
-                             static_cast<std::int16_t>(cell.i + dx - 1), static_cast<std::int16_t>(cell.j + dy - 1),
-                             static_cast<std::int16_t>(cell.k + dz - 1)};
-          touched_.push_back(reached);
-          front.push({e2, reached, p});
+          const int n = (dz * 3 + dy) * 3 + dx;
+          e2[n] = (axis[0][dx] + yz) + axis[2][dz];
+          improves |= static_cast<std::uint32_t>(e2[n] < limit[dx]) << n;  // never the cell itself: e2 = limit
         }
       }
+    for (; improves != 0; improves &= improves - 1) {
+      const int n = std::countr_zero(improves);
+      const int dx = n % 3 - 1, dy = n / 3 % 3 - 1, dz = n / 9 - 1;
+      const std::ptrdiff_t offset = dz * static_cast<std::ptrdiff_t>(psk) + dy * static_cast<std::ptrdiff_t>(psj) + dx;
+      const std::ptrdiff_t gridOffset = dz * static_cast<std::ptrdiff_t>(sk) + dy * static_cast<std::ptrdiff_t>(sj) + dx;
+      const Cell reached{static_cast<std::uint32_t>(cell.at + offset), static_cast<std::uint32_t>(cell.grid + gridOffset),
+                         static_cast<std::int16_t>(cell.i + dx), static_cast<std::int16_t>(cell.j + dy),
+                         static_cast<std::int16_t>(cell.k + dz)};
+      limit_[reached.at] = e2[n];
+      touched_.push_back(reached);
+      front.push({e2[n], reached, p});
+    }
   }
   // 3. The sign of the phase; cells beyond the band hold ±band (the band of their side).
   //    Cells no point reached keep their first limit, beyond their side's band: ±band for all
