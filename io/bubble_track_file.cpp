@@ -169,7 +169,12 @@ void appendNumber(std::string& out, double value) {
 /// the same as dumping each sample as a JSON object (`{"t":…,"depth":…,"transfer":[…],
 /// "position":[…]}`), written without building one.
 std::string formatTrackSet(const BubbleTrackSet& set) {
+  // About 60 characters per bubble line and 70 + 25 per number in a sample line: reserved once.
+  std::size_t samples = 0, numbers = 0;
+  for (const BubbleTrack& bubble : set.bubbles)
+    for (const TrackSample& s : bubble.track) ++samples, numbers += s.transfer.size() + (s.position ? 3 : 0);
   std::string out;
+  out.reserve(256 + 60 * set.bubbles.size() + 70 * samples + 25 * numbers);
   out += "{\n  \"format\": " + json(kFormatTag).dump() + ",\n";
   out += "  \"sample_rate\": ";
   appendNumber(out, set.sampleRate);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -12,6 +13,8 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "acoustics/image_source_transfer.h"
 #include "acoustics/minnaert.h"
@@ -36,6 +39,9 @@ CLI::App* addTransferCommand(CLI::App& app, TransferOptions& o) {
 }
 
 namespace {
+/// Frames evaluated in parallel between two progress updates.
+constexpr std::size_t kFramesPerProgressStep = 8;
+
 std::string frameFile(int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frames/%04d.vdb", frame);
@@ -75,9 +81,12 @@ int runTransferCommand(const TransferOptions& o) {
   const acoustics::LiquidProperties liquid;
   const acoustics::AirProperties air;
   const acoustics::OscillatorModel model;
-  ProgressDisplay progress("transfer", static_cast<int>(samplesOfFrame.size()), "frames", o.common.quiet);
-  int done = 0;
-  for (const auto& [frame, samples] : samplesOfFrame) {
+  // Frames are independent (each sample belongs to one frame and is written by it alone), so they
+  // are read and evaluated in parallel, a chunk at a time for the progress display. An error is
+  // kept per frame and the first in frame order is thrown, as a serial loop would.
+  const std::vector<std::pair<int, std::vector<std::pair<std::size_t, std::size_t>>>> frames(samplesOfFrame.begin(),
+                                                                                              samplesOfFrame.end());
+  const auto transferOfFrame = [&](int frame, const std::vector<std::pair<std::size_t, std::size_t>>& samples) {
     const io::FrameSurface surface(out / frameFile(frame));
     for (const auto& [b, s] : samples) {
       acoustics::BubbleTrack& bubble = tracks.bubbles[b];
@@ -110,7 +119,23 @@ int runTransferCommand(const TransferOptions& o) {
         }
       }
     }
-    progress.update(static_cast<double>(++done) / samplesOfFrame.size());
+  };
+  ProgressDisplay progress("transfer", static_cast<int>(frames.size()), "frames", o.common.quiet);
+  std::vector<std::exception_ptr> errors(frames.size());
+  for (std::size_t first = 0; first < frames.size(); first += kFramesPerProgressStep) {
+    const std::size_t last = std::min(frames.size(), first + kFramesPerProgressStep);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t f = r.begin(); f < r.end(); ++f) {
+        try {
+          transferOfFrame(frames[f].first, frames[f].second);
+        } catch (...) {
+          errors[f] = std::current_exception();
+        }
+      }
+    });
+    for (std::size_t f = first; f < last; ++f)
+      if (errors[f]) std::rethrow_exception(errors[f]);
+    progress.update(static_cast<double>(last) / frames.size());
   }
   progress.finish();
   io::writeBubbleTracks(tracksPath, tracks);
