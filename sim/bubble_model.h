@@ -73,6 +73,8 @@ class BubbleModel {
   ///        (2) tags surface particles and updates the seeds (detectEntrainment); (3) draws and
   ///        tests creation attempts (spawnBubbles); new bubbles start with the liquid's velocity
   ///        at their position and a first sample at their birth.
+  ///        The redistancing runs in a task while the bubbles move (their motion reads only the
+  ///        solver's state); the result is that of this serial order for any thread count.
   /// @param t   start of the step [s]: the end of the previous step (checked, 1e-9 relative)
   /// @param dt  [s], > 0
   /// @throws std::invalid_argument for a bad dt, a t that does not continue the previous step,
