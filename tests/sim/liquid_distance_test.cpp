@@ -1,7 +1,8 @@
 // tests/sim/liquid_distance_test.cpp — the distance to the free surface rebuilt from the solver's
 // liquid field: exact for a flat surface even from a field that is a distance only near the
 // surface (as the solver's is), within a fraction of a cell for a tilted plane and a sphere,
-// exact beyond the band through the nearest-surface-point query, and blind to solids.
+// exact beyond the band through the nearest-surface-point query, blind to solids, and the same
+// from one object rebuilt again and again (its memory reused) as from a new one.
 #include "sim/liquid_distance.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <functional>
 #include <iostream>
 #include <numbers>
+#include <vector>
 
 namespace fluidsound::sim {
 namespace {
@@ -210,6 +212,70 @@ TEST(LiquidDistance, NoSurfaceGivesTheBandOnTheGridAndTheDiagonalAnywhere) {
   EXPECT_DOUBLE_EQ(allLiquid.at({0.05, 0.05, 0.05}), -diagonal);
   EXPECT_DOUBLE_EQ(allAir.at({0.05, 0.05, 0.05}), diagonal);
   EXPECT_TRUE(allLiquid.surfacePoints().empty());
+}
+
+}  // namespace
+}  // namespace fluidsound::sim
+
+namespace fluidsound::sim {
+namespace {
+
+TEST(LiquidDistance, RebuildingOneObjectGivesWhatAFreshOneGives) {
+  // Claim: a SurfaceDistance rebuilt again and again (the bubble model's use, which keeps its work
+  // arrays and its solid cells between rebuilds) gives exactly what a new object gives, whatever
+  // it held before: a moved solid, another grid size, another band. Reference: a freshly
+  // constructed SurfaceDistance on the same input. Tolerance: none (the same arithmetic).
+  const auto blockNodes = [](const GridGeometry& g, double x0) {
+    Array3f nodes(g.nodeCount());
+    for (int k = 0; k <= g.cells[2]; ++k)
+      for (int j = 0; j <= g.cells[1]; ++j)
+        for (int i = 0; i <= g.cells[0]; ++i) {
+          const Vec3 x = g.worldFromGrid({1.0 * i, 1.0 * j, 1.0 * k});
+          const double dx = std::max(x0 - x[0], x[0] - (x0 + 0.03)), dy = std::max(0.01 - x[1], x[1] - 0.04),
+                       dz = std::max(0.03 - x[2], x[2] - 0.07);
+          nodes(i, j, k) = static_cast<float>(std::max({dx, dy, dz}));
+        }
+    return nodes;
+  };
+  const auto field = [](const GridGeometry& g, const std::function<double(const Vec3&)>& distance) {
+    Array3f phi(g.cells);
+    for (int k = 0; k < g.cells[2]; ++k)
+      for (int j = 0; j < g.cells[1]; ++j)
+        for (int i = 0; i < g.cells[0]; ++i)
+          phi(i, j, k) = static_cast<float>(std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
+    return phi;
+  };
+  const GridGeometry a = cube();
+  GridGeometry b;
+  b.cells = {20, 28, 12};
+  b.cellSize = kCell;
+  b.origin = {0.01, -0.02, 0.0};
+  const auto sphere = [](const Vec3& x) {
+    return std::hypot(x[0] - 0.07, x[1] - 0.06, x[2] - 0.08) - 0.035;  // a drop
+  };
+  const auto tilted = [](const Vec3& x) { return 0.6 * x[0] + 0.8 * x[1] - 0.06; };
+  struct Input {
+    const GridGeometry* grid;
+    Array3f phi, nodes;
+    double band, airBand;
+  };
+  const std::vector<Input> inputs = {
+      {&a, field(a, sphere), openNodes(a), 6 * kCell, 4 * kCell},
+      {&a, field(a, sphere), blockNodes(a, 0.05), 6 * kCell, 4 * kCell},
+      {&a, field(a, tilted), blockNodes(a, 0.08), 6 * kCell, 4 * kCell},
+      {&b, field(b, tilted), openNodes(b), 5 * kCell, 0.0},
+      {&a, field(a, sphere), blockNodes(a, 0.05), 9 * kCell, 2 * kCell},
+  };
+  SurfaceDistance reused;
+  for (std::size_t n = 0; n < inputs.size(); ++n) {
+    const Input& in = inputs[n];
+    reused.rebuild(in.phi, in.nodes, *in.grid, in.band, in.airBand);
+    const SurfaceDistance fresh(in.phi, in.nodes, *in.grid, in.band, in.airBand);
+    EXPECT_EQ(reused.field().values(), fresh.field().values()) << "rebuild " << n;
+    EXPECT_EQ(reused.surfacePoints(), fresh.surfacePoints()) << "rebuild " << n;
+    const Vec3 deep = in.grid->cellCentre(in.grid->cells[0] / 2, 1, in.grid->cells[2] / 2);
+    EXPECT_EQ(reused.at(deep), fresh.at(deep)) << "rebuild " << n;
+  }
 }
 
 }  // namespace
