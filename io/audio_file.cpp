@@ -151,6 +151,9 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
   if (file.get() == nullptr) {
     throw OutputError(path.string() + ": cannot write: " + sf_strerror(nullptr));
   }
+  // No PEAK chunk: libsndfile stamps it with the time of writing, so two renders of the same
+  // input would differ in those bytes (the peak is in report.json).
+  sf_command(file.get(), SFC_SET_ADD_PEAK_CHUNK, nullptr, SF_FALSE);
   const auto writeFailed = [&] {
     return OutputError(path.string() + ": cannot write: " + sf_strerror(file.get()));
   };

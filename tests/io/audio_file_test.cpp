@@ -6,14 +6,17 @@
 #include <sndfile.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io/input_error.h"
@@ -108,6 +111,24 @@ TEST(AudioFile, FloatWavRoundTripIsBitExact) {
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"render.wav"});
 }
 
+
+TEST(AudioFile, TheSameAudioWrittenTwiceGivesTheSameBytes) {
+  // Claim: a float WAV holds nothing but the format and the samples — no PEAK chunk, which
+  // libsndfile stamps with the time of writing — so the same render written twice, a second
+  // apart, is the same file byte for byte (the brief: same input and seed, same bits).
+  TempFolder folder;
+  const AudioBuffer audio = testSignal(0.5);
+  writeAudio(folder.path() / "a.wav", audio, {});
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the chunk's clock ticks in seconds
+  writeAudio(folder.path() / "b.wav", audio, {});
+  const auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string a = bytes(folder.path() / "a.wav");
+  EXPECT_EQ(a.find("PEAK"), std::string::npos) << "a PEAK chunk";
+  EXPECT_TRUE(a == bytes(folder.path() / "b.wav")) << "the two files differ";  // not printed: binary
+}
 TEST(AudioFile, Pcm16RoundTripIsWithinQuantisationAndDither) {
   TempFolder folder;
   const fs::path path = folder.path() / "render.wav";
