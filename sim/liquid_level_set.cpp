@@ -67,39 +67,7 @@ Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
 }  // namespace
 
 double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes, const GridGeometry& grid) {
-  const double h = grid.cellSize;
-  constexpr int kSamples = 4;  // per axis and cell, as liquidVolume
-  constexpr double kWidth = 1.0 / kSamples;
-  std::vector<double> perSlab(static_cast<std::size_t>(grid.cells[2]), 0.0);
-  tbb::parallel_for(0, grid.cells[2], [&](int k) {
-    double sum = 0.0;
-    for (int j = 0; j < grid.cells[1]; ++j)
-      for (int i = 0; i < grid.cells[0]; ++i) {
-        const double centre = phi(i, j, k);
-        if (centre >= h) continue;  // all air
-        double solidAtNodes = std::numeric_limits<double>::max();
-        for (int c = 0; c < 8; ++c)
-          solidAtNodes = std::min(solidAtNodes, static_cast<double>(sceneSolidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2))));
-        if (centre <= -h && solidAtNodes >= h) {  // all liquid, no solid near
-          sum += 1.0;
-          continue;
-        }
-        const Vec3 corner = grid.worldFromGrid({double(i), double(j), double(k)});
-        double fraction = 0.0;
-        for (int s = 0; s < kSamples * kSamples * kSamples; ++s) {
-          const Vec3 x{corner[0] + (s % kSamples + 0.5) * kWidth * h,
-                       corner[1] + ((s / kSamples) % kSamples + 0.5) * kWidth * h,
-                       corner[2] + (s / (kSamples * kSamples) + 0.5) * kWidth * h};
-          if (interpolateNodes(sceneSolidNodes, grid, x) <= 0.0f) continue;
-          fraction += std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (kWidth * h), 0.0, 1.0);
-        }
-        sum += fraction / (kSamples * kSamples * kSamples);
-      }
-    perSlab[k] = sum;
-  });
-  double cells = 0.0;
-  for (const double s : perSlab) cells += s;  // in slab order: the same sum on any thread count
-  return cells * h * h * h;
+  return liquidVolume(phi, grid, &sceneSolidNodes);
 }
 
 LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid, const Array3f& solidNodes)

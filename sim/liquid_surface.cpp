@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "sim/cell_interpolation.h"
+#include "sim/particle_seeding.h"
 
 namespace fluidsound::sim {
 namespace {
@@ -141,7 +142,7 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
   return phi;
 }
 
-double liquidVolume(const Array3f& phi, const GridGeometry& grid) {
+double liquidVolume(const Array3f& phi, const GridGeometry& grid, const Array3f* solidNodes) {
   const double h = grid.cellSize;
   constexpr int kSamples = 4;                 // per axis and cell
   constexpr double kWidth = 1.0 / kSamples;   // sample spacing [cells]
@@ -151,14 +152,21 @@ double liquidVolume(const Array3f& phi, const GridGeometry& grid) {
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
         const double centre = phi(i, j, k);
-        if (centre <= -h) { sum += 1.0; continue; }  // a cell away from the surface is all liquid…
-        if (centre >= h) continue;                    // …or all air
+        if (centre >= h) continue;  // a cell away from the surface is all air…
+        bool nearSolid = false;
+        for (int c = 0; solidNodes != nullptr && c < 8 && !nearSolid; ++c)
+          nearSolid = (*solidNodes)(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2)) < h;
+        if (centre <= -h && !nearSolid) {  // …or all liquid
+          sum += 1.0;
+          continue;
+        }
         const Vec3 corner = grid.worldFromGrid({double(i), double(j), double(k)});
         double fraction = 0.0;
         for (int s = 0; s < kSamples * kSamples * kSamples; ++s) {
           const Vec3 x{corner[0] + (s % kSamples + 0.5) * kWidth * h,
                        corner[1] + ((s / kSamples) % kSamples + 0.5) * kWidth * h,
                        corner[2] + (s / (kSamples * kSamples) + 0.5) * kWidth * h};
+          if (nearSolid && interpolateNodes(*solidNodes, grid, x) <= 0.0f) continue;  // inside a solid
           fraction += std::clamp(0.5 - interpolateCellCentres(phi, grid, x) / (kWidth * h), 0.0, 1.0);
         }
         sum += fraction / (kSamples * kSamples * kSamples);

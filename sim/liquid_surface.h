@@ -34,6 +34,8 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
 ///        clamp(½ − φ/(h/4), 0, 1) liquid. Sampling, not clamp(½ − φ/h) at the centre: the
 ///        particle surface's φ is a distance only near the surface and a plateau ≈ −0.4 h inside,
 ///        which the centre formula would count as 0.9 of a cell.
-double liquidVolume(const Array3f& phi, const GridGeometry& grid);
+/// @param solidNodes  if given, solid signed distance at the nodes [m]: samples inside a solid
+///                    count as no liquid (cells with a node within h of a solid are sampled)
+double liquidVolume(const Array3f& phi, const GridGeometry& grid, const Array3f* solidNodes = nullptr);
 
 }  // namespace fluidsound::sim
