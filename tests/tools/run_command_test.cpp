@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/command_runner.h"
+#include "support/falling_column_scene.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::test {
@@ -16,16 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A column of water falling over in a 12 × 8 × 2 cell box for 0.4 s: splashes, so it makes
-/// bubbles, in about a second.
-constexpr const char* kScene = R"({
-  "format": "fluidsound.scene/1",
-  "domain": { "min": [0, 0, 0], "max": [0.24, 0.16, 0.04], "cell": 0.02 },
-  "time": { "duration": 0.4, "fps": 30 },
-  "liquid": [ { "box": { "min": [0, 0, 0], "max": [0.08, 0.14, 0.04] } } ],
-  "listeners": [ { "name": "left", "position": [0.06, 0.4, 0.02] },
-                 { "name": "right", "position": [0.18, 0.4, 0.02] } ]
-})";
+constexpr const char* kScene = kFallingColumnScene;
 
 nlohmann::json readJson(const fs::path& path) {
   std::ifstream in(path);
