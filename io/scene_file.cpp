@@ -255,9 +255,19 @@ class SceneReader {
   sim::SolverSettings solverSettings(const json& object) const {
     const std::string path = "solver";
     check_.rejectUnknownKeys(object, path,
-                             {"transfer", "flip_ratio", "particles_per_cell", "pressure_tolerance",
+                             {"transfer", "surface", "flip_ratio", "particles_per_cell", "pressure_tolerance",
                               "max_pressure_iterations"});
     sim::SolverSettings s;
+    if (const json* surface = findMember(object, "surface")) {
+      const std::string expected = R"("particles" or "level_set")";
+      if (surface->is_string() && surface->get_ref<const std::string&>() == "particles") {
+        s.surface = sim::SurfaceMethod::Particles;
+      } else if (surface->is_string() && surface->get_ref<const std::string&>() == "level_set") {
+        s.surface = sim::SurfaceMethod::LevelSet;
+      } else {
+        check_.fail(memberPath(path, "surface"), expected, describe(*surface));
+      }
+    }
     if (const json* transfer = findMember(object, "transfer")) {
       const std::string transferPath = memberPath(path, "transfer");
       std::string expected = R"("apic" or "flip")";

@@ -185,11 +185,16 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
   velocity_ = MacVelocity(grid_);
   const CellIndex& index = sortParticlesByCell(particles_, grid_, work_->transfer);
   particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight, work_->transfer);
-  levelSet_ = LiquidLevelSet(scene, grid_, work_->solidNodes);
-  levelSet_.holdToParticles(surfaceFromParticles(index), index, velocity_, work_->sceneSolidNodes, levelSetHold());
-  liquidPhi_ = levelSet_.phi();
-  liquidVolumeTarget_ = liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+  liquidPhi_ = surfaceFromParticles(index);
+  if (usesLevelSet()) {
+    levelSet_ = LiquidLevelSet(scene, grid_, work_->solidNodes);
+    levelSet_.holdToParticles(liquidPhi_, index, velocity_, work_->sceneSolidNodes, levelSetHold());
+    liquidPhi_ = levelSet_.phi();
+    liquidVolumeTarget_ = liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+  }
 }
+
+bool FluidSolver::usesLevelSet() const { return scene_.solver.surface == SurfaceMethod::LevelSet; }
 
 LevelSetHold FluidSolver::levelSetHold() const {
   LevelSetHold hold;
@@ -231,17 +236,22 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   stats.particlesDeleted += correction.particlesDeleted;
   stats.densityIterations += correction.solve.iterations;
   stats.maxDensityExcess = std::max(stats.maxDensityExcess, correction.maxExcess);
-  // 2. Refill liquid cells left with too few particles and thin what is still clumped. The surface
-  //    level set decides which cells are liquid (the correction moves particles by a fraction of a
-  //    cell).
+  // 2. Refill liquid cells left with too few particles and thin what is still clumped. The particle
+  //    surface from before the correction decides which cells are liquid (the correction moves
+  //    particles by a fraction of a cell).
   const CellIndex& after = sortParticlesByCell(particles_, grid_, w.transfer);
-  // The level set held to the particles as each substep holds it, then given their volume.
-  levelSet_.holdToParticles(particlePhi, after, velocity_, w.sceneSolidNodes, levelSetHold());
-  const double particleVolume = std::pow(grid_.cellSize, 3) / scene_.solver.particlesPerCell;
-  liquidVolumeTarget_ += (static_cast<double>(stats.particlesEmitted) - static_cast<double>(leftThroughOpenFaces_)) * particleVolume;
+  if (usesLevelSet()) {
+    // The level set held to the particles as each substep holds it, then given the liquid's volume.
+    levelSet_.holdToParticles(particlePhi, after, velocity_, w.sceneSolidNodes, levelSetHold());
+    const double particleVolume = std::pow(grid_.cellSize, 3) / scene_.solver.particlesPerCell;
+    liquidVolumeTarget_ +=
+        (static_cast<double>(stats.particlesEmitted) - static_cast<double>(leftThroughOpenFaces_)) * particleVolume;
+    levelSet_.matchVolume(liquidVolumeTarget_, w.sceneSolidNodes);
+    liquidPhi_ = levelSet_.phi();
+  } else {
+    liquidPhi_ = particlePhi;
+  }
   leftThroughOpenFaces_ = 0;
-  levelSet_.matchVolume(liquidVolumeTarget_, w.sceneSolidNodes);
-  liquidPhi_ = levelSet_.phi();
   ReseedingLimits limits;
   limits.target = scene_.solver.particlesPerCell;
   limits.minimum = std::min(limits.minimum, limits.target);
@@ -337,8 +347,11 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   const bool flip = scene_.solver.transfer == TransferScheme::Flip;
   if (flip) w.oldVelocity = velocity_;  // APIC does not read it
   // 2. Free surface, held to the particles before gravity changes the velocity it reads.
-  levelSet_.holdToParticles(surfaceFromParticles(index), index, velocity_, work_->sceneSolidNodes, levelSetHold());
-  liquidPhi_ = levelSet_.phi();
+  liquidPhi_ = surfaceFromParticles(index);
+  if (usesLevelSet()) {
+    levelSet_.holdToParticles(liquidPhi_, index, velocity_, w.sceneSolidNodes, levelSetHold());
+    liquidPhi_ = levelSet_.phi();
+  }
   lap(seconds.surface);
   // 3. Body forces, then the pressure projection.
   for (int a = 0; a < 3; ++a) {
@@ -351,7 +364,7 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   settings.maxIterations = scene_.solver.maxPressureIterations;
   // Static solids: the level runs on through them (liquid_level_set.h). Moving ones keep the
   // particle-era rule, which a moving solid's swept cells need (docs/solver.md).
-  const Array3f pressurePhi = w.solidsMove
+  const Array3f pressurePhi = (w.solidsMove || !usesLevelSet())
                                   ? extendIntoSolids(liquidPhi_, w.solidNodes, grid_, upFromGravity(scene_.gravity))
                                   : extendLevelAcrossSolids(liquidPhi_, w.solidNodes, upFromGravity(scene_.gravity), grid_.cellSize);
   const PressureReport report = w.pressure.project(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
@@ -373,7 +386,7 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
                                               scene_.domain, dt);
   stats.particlesDeleted += left;
   leftThroughOpenFaces_ += left;
-  levelSet_.advect(velocity_, w.sceneSolidNodes, dt, std::ceil(scene_.time.cfl) + kLevelSetMarginCells);
+  if (usesLevelSet()) levelSet_.advect(velocity_, w.sceneSolidNodes, dt, std::ceil(scene_.time.cfl) + kLevelSetMarginCells);
   lap(seconds.advection);
   if (observer) {
     observer(LiquidState{particles_.position, particles_.velocity, particles_.id, liquidPhi_, velocity_, w.solidNodes,

@@ -91,6 +91,7 @@ class FluidSolver {
   /// The liquid distance at cell centres from the sorted particles.
   Array3f surfaceFromParticles(const struct CellIndex& index) const;
   LevelSetHold levelSetHold() const;
+  bool usesLevelSet() const;  ///< scene.solver.surface is LevelSet
   /// Once per frame: the density correction, then reseeding (docs/solver.md, steps 10–11).
   void maintainParticles(FrameStats& stats);
 

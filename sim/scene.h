@@ -119,12 +119,19 @@ enum class TransferScheme {
 };
 
 /// Numerical settings of the liquid solver (the scene's optional "solver" block).
+/// The liquid surface the pressure solve sees (docs/solver.md, step 4).
+enum class SurfaceMethod {
+  Particles,  ///< re-derived from the particles every substep (Zhu & Bridson 2005)
+  LevelSet,   ///< a grid level set carried with the liquid and held to the particles
+};
+
 struct SolverSettings {
   TransferScheme transfer = TransferScheme::Apic;
   double flipRatio = 0.95;        ///< FLIP share of the FLIP/PIC blend [-], 0 … 1
   int particlesPerCell = 8;       ///< seeding density (jittered), 1 … 64
   double pressureTolerance = 1e-6;  ///< relative residual of the pressure solve
   int maxPressureIterations = 1000;
+  SurfaceMethod surface = SurfaceMethod::Particles;
   bool operator==(const SolverSettings&) const = default;
 };
 

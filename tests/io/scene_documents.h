@@ -55,7 +55,7 @@ inline json fullScene() {
                    { "name": "right", "position": [0.35, 0.4, 0.3] } ],
     "audio": { "sample_rate": 44100 },
     "solver": { "transfer": "flip", "flip_ratio": 0.9, "particles_per_cell": 4,
-                "pressure_tolerance": 1e-5, "max_pressure_iterations": 200 }
+                "pressure_tolerance": 1e-5, "max_pressure_iterations": 200, "surface": "level_set" }
   })");
 }
 

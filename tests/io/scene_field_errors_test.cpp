@@ -320,8 +320,11 @@ const std::vector<FieldCase> kFieldCases = {
      "solver.max_pressure_iterations", "an integer from 1 to 2147483647", "10.5"},
     {"solver_max_pressure_iterations_string", "/solver/max_pressure_iterations", R"("1000")",
      "solver.max_pressure_iterations", "an integer from 1 to 2147483647", R"("1000")"},
+    {"solver_surface_unknown", "/solver/surface", R"("grid")", "solver.surface",
+     R"("particles" or "level_set")", R"("grid")"},
+    {"solver_surface_number", "/solver/surface", "1", "solver.surface", R"("particles" or "level_set")", "1"},
     {"solver_unknown_key", "/solver/tolerance", "1e-6", "solver.tolerance",
-     "one of transfer, flip_ratio, particles_per_cell, pressure_tolerance, max_pressure_iterations",
+     "one of transfer, surface, flip_ratio, particles_per_cell, pressure_tolerance, max_pressure_iterations",
      "an unknown key"},
 };
 

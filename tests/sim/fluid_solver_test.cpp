@@ -1,6 +1,5 @@
 // Tests of sim/fluid_solver.h: whole substeps of the liquid solver on coarse grids.
 #include "sim/fluid_solver.h"
-#include "sim/liquid_level_set.h"
 #include "sim/liquid_surface.h"
 #include "sim/particle_seeding.h"
 #include "sim/solid_geometry.h"
@@ -51,9 +50,9 @@ TEST(FluidSolver, DamBreakStaysDivergenceFreeAndConverges) {
 // cells, advanced frame by frame at 30 fps as `simulate` does, so the once-per-frame density
 // correction and reseeding run). Measured: −0.2 % (clumps thinned above 16 per cell).
 // Reference: frame 0. Tolerance: the 2 %.
-// The level set's volume is held to the liquid's (LiquidLevelSet::matchVolume: a closed box keeps
-// its start volume); checked to 1 %, which fails if the hold cannot keep it (its shift is capped
-// at half a cell per frame).
+// The particle surface's volume is a regression bound only (5 %): it reads the column 1 % low at
+// frame 0, +1.2 % at 3 s, and up to +17 % while the splash is in the air (sheets thinner than a
+// cell read ~0.8 cell thick). With solver.surface = level_set it is held to the start volume.
 TEST(FluidSolver, DamBreakKeepsItsVolumeForThreeSeconds) {
   Scene scene = damBreak();
   scene.domain.max[2] = 0.1;
@@ -68,8 +67,7 @@ TEST(FluidSolver, DamBreakKeepsItsVolumeForThreeSeconds) {
     ASSERT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
     ASSERT_EQ(stats.particlesDeleted, 0u) << "a closed box loses nothing";
   }
-  EXPECT_NEAR(liquidVolumeOutsideSolids(solver.liquidDistance(), Array3f(Index3{51, 31, 11}, 1.0f), solver.grid()),
-              volume, 0.01 * volume);
+  EXPECT_NEAR(stats.liquidVolume, volume, 0.05 * volume);
   for (const Vec3f& x : solver.particles().position) {
     ASSERT_GE(x[1], 0.0f);
     ASSERT_LE(x[0], 0.5f);
@@ -92,7 +90,30 @@ TEST(FluidSolver, IdenticalParticlesForAnyThreadCount) {
   EXPECT_EQ(one, two);
 }
 
-/// The resting tanks' measures after `seconds` of 30-fps frames: the fastest particle [m/s] and
+// The default particle surface (solver.surface = particles) in the same tanks: a regression bound,
+// not the goal. Its bumps start gravity waves (the fastest particles move vertically at the
+// surface): measured 2.3 mm/s at 2 s for the flat tank (median 0.3 mm/s), 2.9 mm/s over the 15°
+// slope; the level set (below) reaches the issue's < 1 mm/s. Bounds 3 and 5 mm/s.
+TEST(FluidSolver, ParticleSurfaceTanksStayNearlyAtRest) {
+  FluidSolver flat(tank(0.0735));
+  FrameStats stats;
+  for (int frame = 1; frame <= 60; ++frame) {
+    stats = flat.advanceTo(frame / 30.0);
+    ASSERT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
+  }
+  EXPECT_LT(stats.maxSpeed, 0.003);
+  Scene scene = tank(0.0735);
+  Solid slope;
+  slope.shape = Box{{-0.05, -0.1, -0.05}, {0.21, 0.02, 0.21}};
+  slope.rotateDegrees = {0.0, 0.0, 15.0};
+  scene.solids.push_back(slope);
+  FluidSolver sloped(scene);
+  for (int frame = 1; frame <= 60; ++frame) stats = sloped.advanceTo(frame / 30.0);
+  EXPECT_LT(stats.maxSpeed, 0.005);
+}
+
+/// The resting tanks' measures after `seconds` of 30-fps frames with the level-set surface
+/// (solver.surface = level_set, docs/solver.md step 4): the fastest particle [m/s] and
 /// the spread (highest − lowest) of the surface height [m] over the columns whose surface lies
 /// outside every solid, each column's height where φ crosses zero going up (linear between the
 /// two centres). Every frame's projection is also checked divergence-free (< 1e-4).
@@ -100,7 +121,8 @@ struct RestMeasure {
   double maxSpeed = 0.0, heightSpread = 0.0;
   int columns = 0;
 };
-RestMeasure restAfter(const Scene& scene, double seconds) {
+RestMeasure restAfter(Scene scene, double seconds) {
+  scene.solver.surface = SurfaceMethod::LevelSet;
   FluidSolver solver(scene);
   FrameStats stats;
   for (int frame = 1; frame <= static_cast<int>(seconds * 30.0 + 0.5); ++frame) {
