@@ -362,8 +362,8 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   PressureSettings settings;
   settings.tolerance = scene_.solver.pressureTolerance;
   settings.maxIterations = scene_.solver.maxPressureIterations;
-  // Static solids: the level runs on through them (liquid_level_set.h). Moving ones keep the
-  // particle-era rule, which a moving solid's swept cells need (docs/solver.md).
+  // With the level set and static solids, the level runs on through them (liquid_level_set.h);
+  // otherwise extendIntoSolids' cut-cell rules (a moving solid's swept cells need them too).
   const Array3f pressurePhi = (w.solidsMove || !usesLevelSet())
                                   ? extendIntoSolids(liquidPhi_, w.solidNodes, grid_, upFromGravity(scene_.gravity))
                                   : extendLevelAcrossSolids(liquidPhi_, w.solidNodes, upFromGravity(scene_.gravity), grid_.cellSize);
