@@ -21,6 +21,10 @@ constexpr double kFarCells = 8.0;
 /// φ a cell is held to where the particles leave no doubt [cells]: within half a cell of its
 /// centre on the liquid (every cell around full) or the air (no particle around) side.
 constexpr double kCertainCells = 0.5;
+/// Passes of extendLevelAcrossSolids: the corner of two walls off the cell planes takes three
+/// (tests/sim/liquid_level_set_test.cpp); a fully closed cell deeper in the solid is no unknown of
+/// the pressure solve, whatever it holds.
+constexpr int kExtensionPasses = 3;
 
 /// Whether the cell's centre lies inside a solid: the mean of its 8 nodal distances < 0 (the
 /// solver's rule for solid cells).
@@ -178,38 +182,56 @@ void LiquidLevelSet::matchVolume(double target, const Array3f& sceneSolidNodes) 
 }
 
 Array3f extendLevelAcrossSolids(const Array3f& phi, const Array3f& solidNodes, const Index3& up, double h) {
-  Array3f out = phi;
   const Index3 n = phi.size();
   const int upAxis = up[0] != 0 ? 0 : up[1] != 0 ? 1 : 2;
+  Array3<std::uint8_t> solid(n, 0), known(n, 0);  // centre inside a solid; φ known (outside or filled)
   tbb::parallel_for(0, n[2], [&](int k) {
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
-        if (!centreInSolid(solidNodes, i, j, k)) continue;
-        double sum = 0.0;
-        int count = 0;
-        for (int a = 0; a < 3; ++a) {
-          if (a == upAxis) continue;
-          for (const int side : {-1, 1}) {
-            Index3 c{i, j, k};
-            c[a] += side;
-            if (c[a] < 0 || c[a] >= n[a] || centreInSolid(solidNodes, c[0], c[1], c[2])) continue;
-            sum += phi(c[0], c[1], c[2]);
-            ++count;
-          }
-        }
-        if (count > 0) {
-          out(i, j, k) = static_cast<float>(sum / count);
-          continue;
-        }
-        // Under (over) a cell outside the solid: one cell deeper (higher) than it.
-        for (const int side : {1, -1}) {
-          const Index3 c{i + side * up[0], j + side * up[1], k + side * up[2]};
-          if (c[upAxis] < 0 || c[upAxis] >= n[upAxis] || centreInSolid(solidNodes, c[0], c[1], c[2])) continue;
-          out(i, j, k) = static_cast<float>(phi(c[0], c[1], c[2]) - side * h);
-          break;
-        }
+        solid(i, j, k) = centreInSolid(solidNodes, i, j, k);
+        known(i, j, k) = !solid(i, j, k);
       }
   });
+  Array3f out = phi;
+  // Passes after the first fill the solid cells whose horizontal neighbours are all solid but
+  // were filled by an earlier one — the corner of two walls that both lie off the cell planes
+  // (up to three cells there), where particles stopped at the walls would otherwise sit in a
+  // cell the pressure solve sees as air.
+  for (int pass = 0; pass < kExtensionPasses; ++pass) {
+    const Array3f from = out;
+    const Array3<std::uint8_t> knownBefore = known;
+    tbb::parallel_for(0, n[2], [&](int k) {
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          if (knownBefore(i, j, k)) continue;
+          double sum = 0.0;
+          int count = 0;
+          for (int a = 0; a < 3; ++a) {
+            if (a == upAxis) continue;
+            for (const int side : {-1, 1}) {
+              Index3 c{i, j, k};
+              c[a] += side;
+              if (c[a] < 0 || c[a] >= n[a] || !knownBefore(c[0], c[1], c[2])) continue;
+              sum += from(c[0], c[1], c[2]);
+              ++count;
+            }
+          }
+          if (count > 0) {
+            out(i, j, k) = static_cast<float>(sum / count);
+            known(i, j, k) = 1;
+            continue;
+          }
+          // Under (over) a known cell: one cell deeper (higher) than it.
+          for (const int side : {1, -1}) {
+            const Index3 c{i + side * up[0], j + side * up[1], k + side * up[2]};
+            if (c[upAxis] < 0 || c[upAxis] >= n[upAxis] || !knownBefore(c[0], c[1], c[2])) continue;
+            out(i, j, k) = static_cast<float>(from(c[0], c[1], c[2]) - side * h);
+            known(i, j, k) = 1;
+            break;
+          }
+        }
+    });
+  }
   return out;
 }
 

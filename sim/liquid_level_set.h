@@ -87,7 +87,8 @@ double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNo
 ///        cut cells at a contact line see the level the liquid has (a sloped floor, a sphere
 ///        through the surface: at rest to round-off). A cell with no such neighbour but one
 ///        outside the solid above (below) it takes that φ − h (+ h): a flat level continued
-///        downward (upward). Others keep φ.
+///        downward (upward). Two more passes do the same from the cells filled before (the
+///        corner of two walls off the cell planes). Others keep φ.
 /// @param solidNodes  solid signed distance at the nodes [m]
 /// @param up          the grid step against gravity (one axis)
 /// @param h           cell size [m]
