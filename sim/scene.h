@@ -131,7 +131,7 @@ struct SolverSettings {
   int particlesPerCell = 8;       ///< seeding density (jittered), 1 … 64
   double pressureTolerance = 1e-6;  ///< relative residual of the pressure solve
   int maxPressureIterations = 1000;
-  SurfaceMethod surface = SurfaceMethod::Particles;
+  SurfaceMethod surface = SurfaceMethod::LevelSet;
   bool operator==(const SolverSettings&) const = default;
 };
 
