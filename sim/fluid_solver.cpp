@@ -194,20 +194,23 @@ FluidSolver::FluidSolver(const Scene& scene, FluidProperties properties)
   }
 }
 
+std::size_t FluidSolver::fullCellCount() const {
+  return (static_cast<std::size_t>(scene_.solver.particlesPerCell) + 1) / 2;
+}
+
 bool FluidSolver::usesLevelSet() const { return scene_.solver.surface == SurfaceMethod::LevelSet; }
 
 LevelSetHold FluidSolver::levelSetHold() const {
   LevelSetHold hold;
   hold.trustSpeed = kTrustSpeedCellsPerSecond * grid_.cellSize;
-  hold.fullCount = (scene_.solver.particlesPerCell + 1) / 2;
+  hold.fullCount = static_cast<int>(fullCellCount());
   return hold;
 }
 
 FluidSolver::~FluidSolver() = default;
 
 Array3f FluidSolver::surfaceFromParticles(const CellIndex& index) const {
-  const std::size_t full = (static_cast<std::size_t>(scene_.solver.particlesPerCell) + 1) / 2;
-  Array3f phi = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_, full);
+  Array3f phi = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_, fullCellCount());
   // A cell holding 1.5× the seeding density is liquid whatever the kernel says: a sheet pressed
   // against a wall puts its particles within a sliver of the wall, where the kernel-averaged
   // surface would read the cell centre as air; as air it gets no pressure, gravity presses the

@@ -92,6 +92,9 @@ class FluidSolver {
   Array3f surfaceFromParticles(const struct CellIndex& index) const;
   LevelSetHold levelSetHold() const;
   bool usesLevelSet() const;  ///< scene.solver.surface is LevelSet
+  /// Particles per cell that count as a full cell (half the seeding count, rounded up): the
+  /// surface kernel's interior shortcut and the level set's certain-liquid rule.
+  std::size_t fullCellCount() const;
   /// Once per frame: the density correction, then reseeding (docs/solver.md, steps 10–11).
   void maintainParticles(FrameStats& stats);
 
