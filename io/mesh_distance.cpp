@@ -48,8 +48,13 @@ constexpr int kExtraBandCells = 1;
 
 }  // namespace
 
-sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings) {
+namespace {
+
+/// The band of `mesh` sampled at the grid's nodes by meshToVolume with `flags`, clamped to
+/// [lowest, halfWidthCells·h]; see meshNodeDistance.
+sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
+                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings, int flags,
+                              bool isSigned) {
   if (!(placement.scale > 0.0) || !std::isfinite(placement.scale))
     throw std::invalid_argument("meshNodeDistance: scale must be finite and > 0, is " +
                                 std::to_string(placement.scale));
@@ -59,6 +64,7 @@ sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement
 
   const double h = grid.cellSize;
   const float band = static_cast<float>(settings.halfWidthCells * h);
+  const float lowest = isSigned ? -band : 0.0f;
   sim::Array3f distance(grid.nodeCount(), band);
   if (mesh.triangles.empty()) return distance;
 
@@ -67,8 +73,7 @@ sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement
   transform->postTranslate(openvdb::Vec3d(grid.origin[0], grid.origin[1], grid.origin[2]));
   const auto halfWidth = static_cast<float>(settings.halfWidthCells + kExtraBandCells);
   const openvdb::FloatGrid::Ptr field = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
-      PlacedTriangles(mesh, placement, grid), *transform, halfWidth, halfWidth,
-      openvdb::tools::DISABLE_RENORMALIZATION);
+      PlacedTriangles(mesh, placement, grid), *transform, halfWidth, halfWidth, flags);
 
   // Inactive voxels hold ±background = ±halfWidth·h already; the clamp also bounds the few
   // band voxels OpenVDB leaves just past the band's edge.
@@ -78,9 +83,22 @@ sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement
     for (int k = r.begin(); k < r.end(); ++k)
       for (int j = 0; j < n[1]; ++j)
         for (int i = 0; i < n[0]; ++i)
-          distance(i, j, k) = std::clamp(accessor.getValue(openvdb::Coord(i, j, k)), -band, band);
+          distance(i, j, k) = std::clamp(accessor.getValue(openvdb::Coord(i, j, k)), lowest, band);
   });
   return distance;
+}
+
+}  // namespace
+
+sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
+                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings) {
+  return sampleMeshVolume(mesh, placement, grid, settings, openvdb::tools::DISABLE_RENORMALIZATION, true);
+}
+
+sim::Array3f meshNodeUnsignedDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
+                                      const sim::GridGeometry& grid, const MeshDistanceSettings& settings) {
+  return sampleMeshVolume(mesh, placement, grid, settings,
+                          openvdb::tools::UNSIGNED_DISTANCE_FIELD | openvdb::tools::DISABLE_RENORMALIZATION, false);
 }
 
 }  // namespace fluidsound::io

@@ -62,4 +62,12 @@ sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement
                               const sim::GridGeometry& grid,
                               const MeshDistanceSettings& settings = {});
 
+/// @brief Unsigned distance [m] from each grid node to the triangles of `mesh` placed by
+///        `placement` — any set of triangles, closed or not — clamped to halfWidthCells·h. The
+///        same exact closest-triangle zone and band as meshNodeDistance, without a sign.
+/// @throws std::invalid_argument as meshNodeDistance
+sim::Array3f meshNodeUnsignedDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
+                                      const sim::GridGeometry& grid,
+                                      const MeshDistanceSettings& settings = {});
+
 }  // namespace fluidsound::io

@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/input_error.h"
 #include "io/mesh_distance.h"
 #include "io/mesh_file.h"
+#include "io/region_free_surface.h"
 #include "sim/solid_geometry.h"
 
 namespace fluidsound::io {
@@ -35,10 +38,10 @@ sim::TriangleMesh placedMesh(sim::TriangleMesh mesh, double scale, const sim::Ve
 }
 
 /// Reads and checks the mesh `file` names, places it with `place` and fills its distance at the
-/// scene grid's nodes and, for a solid (`withSurface`), its placed triangles.
+/// scene grid's nodes and, for a solid (`withSurface`), its placed triangles; returns them.
 template <typename Place>
-void loadMesh(sim::MeshFile& file, const Place& place, const sim::Scene& scene, const std::string& jsonPath,
-              bool withSurface) {
+sim::TriangleMesh loadMesh(sim::MeshFile& file, const Place& place, const sim::Scene& scene,
+                           const std::string& jsonPath, bool withSurface) {
   const MeshReference reference{scene.file.string(), jsonPath};
   const sim::TriangleMesh mesh = place(readMeshFile(file.file, reference));
   requireClosedMesh(mesh, file.file, reference);
@@ -47,13 +50,16 @@ void loadMesh(sim::MeshFile& file, const Place& place, const sim::Scene& scene, 
   distance->nodes = meshNodeDistance(mesh, MeshPlacement{}, distance->grid);
   file.distance = std::move(distance);
   if (withSurface) file.surface = std::make_shared<const sim::TriangleMesh>(mesh);
+  return mesh;
 }
 }  // namespace
 
 void loadSceneMeshes(sim::Scene& scene) {
+  std::vector<std::pair<sim::MeshFile*, sim::TriangleMesh>> regions;
   for (std::size_t i = 0; i < scene.liquid.size(); ++i)
     if (auto* mesh = std::get_if<sim::MeshFile>(&scene.liquid[i].shape))
-      loadMesh(*mesh, [](sim::TriangleMesh m) { return m; }, scene, "liquid[" + std::to_string(i) + "].mesh", false);
+      regions.emplace_back(mesh, loadMesh(*mesh, [](sim::TriangleMesh m) { return m; }, scene,
+                                          "liquid[" + std::to_string(i) + "].mesh", false));
   for (std::size_t i = 0; i < scene.solids.size(); ++i) {
     sim::Solid& solid = scene.solids[i];
     auto* mesh = std::get_if<sim::MeshFile>(&solid.shape);
@@ -62,6 +68,14 @@ void loadSceneMeshes(sim::Scene& scene) {
       return placedMesh(std::move(m), solid.scale, solid.rotateDegrees, solid.translate);
     };
     loadMesh(*mesh, place, scene, "solids[" + std::to_string(i) + "].mesh", true);
+  }
+  if (regions.empty()) return;
+  // Where each mesh region's surface is free, against the solids where they start.
+  const sim::Array3f solidNodes = sim::solidNodeDistance(scene.grid(), scene.domain, scene.solids, 0.0);
+  for (auto& [file, mesh] : regions) {
+    auto distance = std::make_shared<sim::MeshNodeDistance>(*file->distance);
+    distance->freeSurfaceAtCentres = regionFreeSurfaceAtCentres(mesh, solidNodes, distance->grid);
+    file->distance = std::move(distance);
   }
 }
 

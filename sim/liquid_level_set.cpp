@@ -68,6 +68,39 @@ Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
   }
   return flags;
 }
+
+/// Signed distance [m] from x to the free faces of box b: outside it, the distance to the box;
+/// inside, the distance to the nearest face whose foot point (x projected on the face) is not
+/// against a solid (kSolidContactCells; `solidNodes`, domain walls included). Water poured into a tank up to its
+/// walls, or overlapping them, has no surface there: its level is y − H right up to the wall, as
+/// in the middle (the box's own distance would read the wall cells up to half a cell shallower,
+/// a slope the pressure solve turns into a flow). kFarCells·h deep where every face is against a
+/// solid.
+double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes, const GridGeometry& grid) {
+  const double outside = regionDistance(LiquidRegion{b, {}}, x);
+  if (outside > 0.0) return outside;
+  const double contact = kSolidContactCells * grid.cellSize;
+  double depth = kFarCells * grid.cellSize;
+  for (int a = 0; a < 3; ++a)
+    for (const double plane : {b.min[a], b.max[a]}) {
+      Vec3 foot = x;
+      foot[a] = plane;
+      if (interpolateNodes(solidNodes, grid, foot) <= contact) continue;
+      depth = std::min(depth, std::abs(x[a] - plane));
+    }
+  return -depth;
+}
+
+/// The signed distance [m] from the centre of cell (i, j, k) to the free faces of region r.
+double freeRegionDistance(const LiquidRegion& r, int i, int j, int k, const Array3f& solidNodes,
+                          const GridGeometry& grid) {
+  const Vec3 x = grid.cellCentre(i, j, k);
+  if (const auto* box = std::get_if<Box>(&r.shape)) return freeBoxDistance(*box, x, solidNodes, grid);
+  if (const auto* mesh = std::get_if<MeshFile>(&r.shape);
+      mesh != nullptr && mesh->distance && mesh->distance->freeSurfaceAtCentres.size() == grid.cells)
+    return mesh->distance->freeSurfaceAtCentres(i, j, k);
+  return regionDistance(r, x);
+}
 }  // namespace
 
 double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes, const GridGeometry& grid) {
@@ -77,22 +110,12 @@ double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNo
 LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid, const Array3f& solidNodes)
     : grid_(grid), phi_(grid.cells, static_cast<float>(kFarCells * grid.cellSize)) {
   if (scene.liquid.empty()) return;
-  // A box's faces on the domain's walls are no surface: moved far out, so the distance inside is
-  // to the box's free faces alone (a tank's water is y − H deep at the walls too).
-  std::vector<LiquidRegion> regions = scene.liquid;
-  for (LiquidRegion& r : regions)
-    if (auto* box = std::get_if<Box>(&r.shape))
-      for (int a = 0; a < 3; ++a) {
-        const double slack = 1e-6 * grid.cellSize;
-        if (box->min[a] <= scene.domain.min[a] + slack) box->min[a] = scene.domain.min[a] - kFarCells * grid.cellSize;
-        if (box->max[a] >= scene.domain.max[a] - slack) box->max[a] = scene.domain.max[a] + kFarCells * grid.cellSize;
-      }
   tbb::parallel_for(0, grid.cells[2], [&](int k) {
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
         const Vec3 x = grid.cellCentre(i, j, k);
         double region = kFarCells * grid.cellSize;
-        for (const LiquidRegion& r : regions) region = std::min(region, regionDistance(r, x));
+        for (const LiquidRegion& r : scene.liquid) region = std::min(region, freeRegionDistance(r, i, j, k, solidNodes, grid));
         // Inside a solid: air (the solid's own depth), the solid holds no liquid.
         const double solid = interpolateNodes(solidNodes, grid, x);
         phi_(i, j, k) = static_cast<float>(solid < 0.0 ? std::max(region, -solid) : region);

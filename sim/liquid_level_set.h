@@ -22,6 +22,11 @@
 
 namespace fluidsound::sim {
 
+/// A liquid region's face lies against a solid — where the liquid meets the solid, no free
+/// surface — where the solid distance at it is at most this [cells]: on a wall or inside it, up
+/// to the float rounding of the solid's distance (≈ 1e-5 cell for a mesh wall on the face).
+inline constexpr double kSolidContactCells = 0.01;
+
 /// How the level set follows its particles.
 struct LevelSetHold {
   double bandCells = 1.0;  ///< b in still liquid [cells]: the particle surface's bumps stay inside
@@ -32,10 +37,11 @@ struct LevelSetHold {
 class LiquidLevelSet {
  public:
   LiquidLevelSet() = default;
-  /// @brief φ at cell centres from the scene's liquid regions (their signed distance, a box's
-  ///        faces on the domain walls not counting as surface); inside a solid, the solid's depth
-  ///        (air: the solid holds no liquid). A region's faces against a scene solid do count:
-  ///        the particles correct them where they disagree (holdToParticles).
+  /// @brief φ at cell centres from the scene's liquid regions: their signed distance to their
+  ///        free faces, those not lying against a solid or a domain wall (kSolidContactCells;
+  ///        water filled up to a tank's walls is y − H deep at the walls too); inside a solid,
+  ///        the solid's depth (air: the solid holds no liquid). A mesh region reads
+  ///        MeshNodeDistance::freeSurfaceAtCentres (io/region_free_surface.h) when loaded.
   /// @param solidNodes  the solids' signed distance at the nodes, domain walls included [m]
   LiquidLevelSet(const Scene& scene, const GridGeometry& grid, const Array3f& solidNodes);
 

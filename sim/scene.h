@@ -37,6 +37,9 @@ struct Sphere {
 struct MeshNodeDistance {
   GridGeometry grid;  ///< the nodes are origin + (i, j, k)·cellSize
   Array3f nodes;      ///< size grid.nodeCount()
+  /// For a liquid region: the signed distance at the cell centres (size grid.cells) to its free
+  /// surface, its faces not lying against a solid (io/region_free_surface.h); empty for a solid.
+  Array3f freeSurfaceAtCentres;
 };
 
 /// A triangle mesh file (OBJ or PLY), path resolved against the scene file's folder.

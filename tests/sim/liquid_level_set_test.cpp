@@ -69,6 +69,39 @@ TEST(LiquidLevelSet, StartsAtTheRegionsFreeSurfaceAndAirInSolids) {
   EXPECT_GT(inSphere, 20);
 }
 
+// Claim: a box region's faces lying against a scene solid are no surface either. Water filled
+// up to a wall off the cell planes (a box solid x < 31.7 mm, the water box starting there) and
+// into a second wall it overlaps (z > 123.3 mm, the water box reaching 140 mm) starts at y − H in
+// every cell outside the walls, the cells those walls cut included (the box's own distance
+// would read the cells beside x = 31.7 mm 0.17 cell deep: a slope the pressure solve turns into
+// a flow). A face with its foot point clear of every solid still counts: without the walls the
+// same box reads its own distance. Reference: y − H and the box's distance, exact up to float.
+TEST(LiquidLevelSet, ARegionsFacesAgainstASolidAreNoSurface) {
+  Scene scene = tank();
+  const double wallX = 0.0317, wallZ = 0.1233;
+  scene.liquid[0].shape = Box{{wallX, 0, 0}, {0.16, kLevel, 0.14}};
+  Solid left, back;
+  left.shape = Box{{-0.01, -0.01, -0.01}, {wallX, 0.17, 0.17}};
+  back.shape = Box{{-0.01, -0.01, wallZ}, {0.17, 0.17, 0.17}};
+  scene.solids = {left, back};
+  const GridGeometry g = scene.grid();
+  const LiquidLevelSet level(scene, g, nodesOf(scene, true));
+  int checked = 0;
+  for (int k = 0; k < 16; ++k)
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i) {
+        const Vec3 x = g.cellCentre(i, j, k);
+        if (x[0] < wallX || x[2] > wallZ || x[1] - kLevel > 3 * kCell) continue;
+        EXPECT_NEAR(level.phi()(i, j, k), x[1] - kLevel, 1e-6) << i << " " << j << " " << k;
+        ++checked;
+      }
+  EXPECT_EQ(checked, 13 * 12 * 10);  // columns i = 3 … 15, k = 0 … 11; rows j = 0 … 9
+  scene.solids.clear();
+  const LiquidLevelSet free(scene, g, nodesOf(scene, true));
+  const Vec3 beside = g.cellCentre(3, 5, 5);  // 3.3 mm from the face x = 31.7 mm, 18.5 mm deep
+  EXPECT_NEAR(free.phi()(3, 5, 5), -(beside[0] - wallX), 1e-6);
+}
+
 // Claim: in still liquid (zero velocity) the hold moves φ only where it leaves the band of
 // ±bandCells around the particle surface, and then onto its edge; at the trust speed and above
 // the band is 0 and φ is the particle surface. Cells with a particle or two around and none full

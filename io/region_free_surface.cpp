@@ -1,0 +1,44 @@
+// io/region_free_surface.cpp — see region_free_surface.h.
+#include "io/region_free_surface.h"
+
+#include <algorithm>
+
+#include "io/mesh_distance.h"
+#include "sim/liquid_level_set.h"
+#include "sim/particle_seeding.h"
+
+namespace fluidsound::io {
+
+sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region, const sim::Array3f& solidNodes,
+                                        const sim::GridGeometry& grid) {
+  const double contact = sim::kSolidContactCells * grid.cellSize;
+  const auto againstSolid = [&](const sim::Vec3& p) { return sim::interpolateNodes(solidNodes, grid, p) <= contact; };
+  sim::TriangleMesh free;
+  free.vertices = region.vertices;
+  for (const auto& t : region.triangles) {
+    sim::Vec3 corner[3], centroid{0.0, 0.0, 0.0};
+    for (int v = 0; v < 3; ++v)
+      for (int a = 0; a < 3; ++a) {
+        corner[v][a] = region.vertices[t[v]][a];
+        centroid[a] += corner[v][a] / 3.0;
+      }
+    if (!(againstSolid(corner[0]) && againstSolid(corner[1]) && againstSolid(corner[2]) && againstSolid(centroid)))
+      free.triangles.push_back(t);
+  }
+  // A grid whose nodes are the cell centres: the samples are taken there, not interpolated.
+  sim::GridGeometry centres = grid;
+  for (int a = 0; a < 3; ++a) {
+    centres.origin[a] += 0.5 * grid.cellSize;
+    centres.cells[a] -= 1;
+  }
+  const sim::Array3f whole = meshNodeDistance(region, MeshPlacement{}, centres);
+  const sim::Array3f toFree = meshNodeUnsignedDistance(free, MeshPlacement{}, centres);
+  sim::Array3f out = whole;
+  auto& value = out.values();
+  const auto& freeValue = toFree.values();
+  for (std::size_t c = 0; c < value.size(); ++c)
+    if (value[c] < 0.0f) value[c] = -freeValue[c];
+  return out;
+}
+
+}  // namespace fluidsound::io

@@ -1,0 +1,27 @@
+// io/region_free_surface.h — simulation input for a mesh liquid region: where its surface is
+// free. Water modelled up to a glass's or a basin's walls has faces lying on those walls; they
+// are where the liquid meets the solid, not a surface, and the liquid level set must not start
+// with one there (sim/liquid_level_set.h). In io/ because it runs OpenVDB (mesh_distance.h).
+#pragma once
+
+#include "sim/array3.h"
+#include "sim/grid.h"
+#include "sim/triangle_mesh.h"
+
+namespace fluidsound::io {
+
+/// @brief Signed distance [m] at the solver grid's cell centres to the free part of a closed
+///        liquid-region mesh (placed, world coordinates): its triangles that do not lie against
+///        a solid — a triangle lies against one when the solid distance (`solidNodes`
+///        interpolated) at its three corners and its centroid is at most
+///        sim::kSolidContactCells·h. Inside the region: minus the distance to the nearest free
+///        triangle (exact near it, io/mesh_distance.h), −3h beyond the band or when no triangle
+///        is free; outside: the distance to the whole mesh. Sampled at the centres themselves,
+///        not interpolated from nodes, which reads a convex edge up to ½h shallow.
+/// @param solidNodes  the solids' signed distance at the grid nodes, closed domain walls
+///                    included (sim::solidNodeDistance at the start time) [m]
+/// @return size grid.cells
+sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region, const sim::Array3f& solidNodes,
+                                        const sim::GridGeometry& grid);
+
+}  // namespace fluidsound::io
