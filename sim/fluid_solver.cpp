@@ -304,7 +304,7 @@ FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   stats.particles = particles_.size();
-  stats.liquidVolume = liquidVolume(liquidPhi_, grid_);
+  stats.liquidVolume = liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
   double speed2 = 0.0;
   for (const Vec3f& v : particles_.velocity)
     speed2 = std::max(speed2, static_cast<double>(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));

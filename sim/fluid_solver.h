@@ -32,7 +32,7 @@ struct FrameStats {
   std::size_t particlesThinned = 0;  ///< removed from cells holding more than 16
   int densityIterations = 0;        ///< CG iterations of the density correction (once per frame)
   double maxDensityExcess = 0.0;    ///< largest ρ/ρ₀ − ρ_expected it found [-]
-  double liquidVolume = 0.0;        ///< [m³], from the level set at the frame's end
+  double liquidVolume = 0.0;        ///< [m³], from the surface at the frame's end, outside the solids
   double maxDivergence = 0.0;       ///< worst max|∇·u|·h/|u|max after a projection
   double maxSpeed = 0.0;            ///< fastest particle at the frame's end [m/s]
   /// Wall time per stage [s], summed over the frame's substeps: sort + particle→grid, forces and
