@@ -25,6 +25,11 @@ computed in closed form.
   from its floor (y = 0.015 m) up to y = 0.035 m (2 cm deep, 0.782 L), a closed box. Liquid
   meshes are used as written (docs/scene.md), so this one is in the basin's frame: a scene puts
   the basin at the origin to use it.
+- bowl.obj: a round block with a hemispherical hollow, origin at the centre of its base, axis
+  +y. Block radius 0.08 m, 0.06 m high; the hollow a hemisphere of radius 0.05 m centred on the
+  top face (12 rings of latitude, 48 segments), so its bottom is 0.01 m above the base. A
+  concave, curved wall for still water to rest against (issue 4's bowl: a primitive sphere solid
+  is convex; this is its inside).
 - stone.obj: a low-poly pebble about 0.02 m in radius, centred at the origin: an icosahedron
   split once (42 vertices, 80 triangles), each vertex pushed out to a radius drawn uniformly
   from 0.017-0.023 m and the whole flattened to 0.7 in y. Star-shaped about its centre, so it
@@ -161,6 +166,12 @@ def frustum_volume(bottom, top, height):
     return height / 3 * (a1 + a2 + math.sqrt(a1 * a2))
 
 
+# bowl.obj [m]
+BOWL_RADIUS = 0.08          # the block's
+BOWL_HEIGHT = 0.06
+BOWL_HOLLOW_RADIUS = 0.05   # the hemisphere's, centred on the top face
+BOWL_LATITUDES = 12         # rings from the rim down to the bottom pole
+
 # ---- the meshes -------------------------------------------------------------------------------
 
 def cup(outer, inner_floor, inner_rim, height, base):
@@ -211,6 +222,37 @@ def basin_water():
     return m, area(inside) * (BASIN_WATER_TOP - BASIN_FLOOR)
 
 
+def bowl():
+    """A round block with a hemispherical hollow (see the module docstring): outer bottom disk,
+    outer side, top annulus, then the hollow from the rim ring down to a fan around its pole."""
+    m = Mesh()
+    outer = circle(BOWL_RADIUS)
+    bottom_centre = m.vertex((0.0, 0.0, 0.0))
+    outer_bottom = m.ring(outer, 0.0)
+    outer_top = m.ring(outer, BOWL_HEIGHT)
+    m.disk(bottom_centre, outer_bottom, DOWN)
+    m.band(outer_bottom, outer_top, radial)
+    # Ring n at the polar angle (pi/2)(1 - n/N) from the downward axis: n = 0 is the rim.
+    outlines, heights = [], []
+    for n in range(BOWL_LATITUDES):
+        polar = math.pi / 2 * (1 - n / BOWL_LATITUDES)
+        outlines.append(circle(BOWL_HOLLOW_RADIUS * math.sin(polar)))
+        heights.append(BOWL_HEIGHT - BOWL_HOLLOW_RADIUS * math.cos(polar))
+    rings = [m.ring(o, y) for o, y in zip(outlines, heights)]
+    m.band(outer_top, rings[0], lambda p: UP)
+    centre = (0.0, BOWL_HEIGHT, 0.0)
+    for a, b in zip(rings, rings[1:]):
+        m.band(a, b, lambda p: sub(centre, p))  # faces the hollow: outward from the material
+    pole_y = BOWL_HEIGHT - BOWL_HOLLOW_RADIUS
+    pole = m.vertex((0.0, pole_y, 0.0))
+    m.disk(pole, rings[-1], UP)
+    # The hollow: frustums between the rings and a cone from the last ring to the pole.
+    hollow = sum(frustum_volume(outlines[n + 1], outlines[n], heights[n] - heights[n + 1])
+                 for n in range(BOWL_LATITUDES - 1))
+    hollow += area(outlines[-1]) * (heights[-1] - pole_y) / 3
+    return m, area(outer) * BOWL_HEIGHT - hollow
+
+
 def stone():
     """Icosahedron split once, radii jittered, flattened in y (see the module docstring)."""
     t = (1 + math.sqrt(5)) / 2
@@ -243,7 +285,8 @@ def stone():
     return m, None  # no closed form: the check requires a positive volume only
 
 
-MESHES = {"glass.obj": glass, "basin.obj": basin, "basin_water.obj": basin_water, "stone.obj": stone}
+MESHES = {"glass.obj": glass, "basin.obj": basin, "basin_water.obj": basin_water, "bowl.obj": bowl,
+          "stone.obj": stone}
 
 
 # ---- checks and output ------------------------------------------------------------------------

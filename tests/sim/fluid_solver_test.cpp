@@ -3,6 +3,7 @@
 #include "sim/liquid_surface.h"
 #include "sim/particle_seeding.h"
 #include "sim/solid_geometry.h"
+#include "support/rest_measure.h"
 
 #include <gtest/gtest.h>
 #include <oneapi/tbb/task_arena.h>
@@ -115,48 +116,6 @@ TEST(FluidSolver, ParticleSurfaceTanksStayNearlyAtRest) {
   EXPECT_LT(stats.maxSpeed, 0.005);
 }
 
-/// The resting tanks' measures after `seconds` of 30-fps frames with the level-set surface
-/// (solver.surface = level_set, docs/solver.md step 4): the fastest particle [m/s] and
-/// the spread (highest − lowest) of the surface height [m] over the columns whose surface lies
-/// outside every solid, each column's height where φ crosses zero going up (linear between the
-/// two centres). Every frame's projection is also checked divergence-free (< 1e-4).
-struct RestMeasure {
-  double maxSpeed = 0.0, heightSpread = 0.0;
-  int columns = 0;
-};
-RestMeasure restAfter(Scene scene, double seconds) {
-  scene.solver.surface = SurfaceMethod::LevelSet;
-  FluidSolver solver(scene);
-  FrameStats stats;
-  for (int frame = 1; frame <= static_cast<int>(seconds * 30.0 + 0.5); ++frame) {
-    stats = solver.advanceTo(frame / 30.0);
-    EXPECT_LT(stats.maxDivergence, 1e-4) << "frame " << frame;
-  }
-  const Array3f& phi = solver.liquidDistance();
-  const GridGeometry& g = solver.grid();
-  Domain noWalls = scene.domain;
-  noWalls.open.fill(true);
-  const Array3f solids = solidNodeDistance(g, noWalls, scene.solids, solver.time());
-  RestMeasure m;
-  m.maxSpeed = stats.maxSpeed;
-  double lowest = 1e9, highest = -1e9;
-  for (int k = 0; k < g.cells[2]; ++k)
-    for (int i = 0; i < g.cells[0]; ++i)
-      for (int j = 0; j + 1 < g.cells[1]; ++j) {
-        if (!(phi(i, j, k) < 0.0f && phi(i, j + 1, k) >= 0.0f)) continue;
-        const double f = phi(i, j, k) / (phi(i, j, k) - phi(i, j + 1, k));
-        const Vec3 at{g.cellCentre(i, j, k)[0], g.cellCentre(i, j, k)[1] + f * g.cellSize, g.cellCentre(i, j, k)[2]};
-        if (interpolateNodes(solids, g, at) > 0.5 * g.cellSize) {  // a free surface, not a contact line
-          lowest = std::min(lowest, at[1]);
-          highest = std::max(highest, at[1]);
-          ++m.columns;
-        }
-        break;
-      }
-  m.heightSpread = highest - lowest;
-  return m;
-}
-
 // Claim (issue 4): a tank at rest stays at rest — after 2 s simulated the fastest particle moves
 // at < 1 mm/s and the surface height varies by < 0.1 cell — with the liquid's top inside a row
 // of cells (7.35 cells) and on a plane of cell faces (8 cells), where the particle surface alone
@@ -166,7 +125,7 @@ RestMeasure restAfter(Scene scene, double seconds) {
 TEST(FluidSolver, RestingTankStaysAtRest) {
   for (const double level : {0.0735, 0.08}) {
     SCOPED_TRACE(level);
-    const RestMeasure m = restAfter(tank(level), 2.0);
+    const test::RestMeasure m = test::restAfter(tank(level), 2.0);
     EXPECT_LT(m.maxSpeed, 1e-3);
     EXPECT_LT(m.heightSpread, 0.1 * 0.01);
     EXPECT_EQ(m.columns, 16 * 16);
@@ -185,7 +144,7 @@ TEST(FluidSolver, SlopedFloorTankStaysAtRest) {
   slope.shape = Box{{-0.05, -0.1, -0.05}, {0.21, 0.02, 0.21}};
   slope.rotateDegrees = {0.0, 0.0, 15.0};
   scene.solids.push_back(slope);
-  const RestMeasure m = restAfter(scene, 2.0);
+  const test::RestMeasure m = test::restAfter(scene, 2.0);
   EXPECT_LT(m.maxSpeed, 1e-3);
   EXPECT_LT(m.heightSpread, 0.1 * 0.01);
   EXPECT_GT(m.columns, 16 * 16 / 2);
@@ -202,7 +161,7 @@ TEST(FluidSolver, TankAroundACurvedSolidStaysAtRest) {
   Solid sphere;
   sphere.shape = Sphere{{0.08, 0.05, 0.08}, 0.05};
   scene.solids.push_back(sphere);
-  const RestMeasure m = restAfter(scene, 2.0);
+  const test::RestMeasure m = test::restAfter(scene, 2.0);
   EXPECT_LT(m.maxSpeed, 1e-3);
   EXPECT_LT(m.heightSpread, 0.1 * 0.01);
   EXPECT_GT(m.columns, 16 * 16 / 2);
