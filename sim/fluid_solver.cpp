@@ -91,9 +91,7 @@ Array3f extendIntoSolids(const Array3f& liquidPhi, const Array3f& solidNodes, co
   for (int k = 0; k < grid.cells[2]; ++k)
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
-        float solid = 0.0f;
-        for (int c = 0; c < 8; ++c) solid += solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
-        if (solid >= 0.0f) {
+        if (cellCentreSolidDistance(solidNodes, i, j, k) >= 0.0f) {
           const Index3 above{i + up[0], j + up[1], k + up[2]};
           if (wetCutCell({i, j, k}) && liquidPhi.contains(above[0], above[1], above[2]) &&
               (liquidPhi(above[0], above[1], above[2]) < 0.0f || wetCutCell(above)))

@@ -12,6 +12,7 @@
 #include "sim/cell_interpolation.h"
 #include "sim/liquid_surface.h"
 #include "sim/particle_seeding.h"
+#include "sim/solid_geometry.h"
 
 namespace fluidsound::sim {
 namespace {
@@ -26,12 +27,9 @@ constexpr double kCertainCells = 0.5;
 /// the pressure solve, whatever it holds.
 constexpr int kExtensionPasses = 3;
 
-/// Whether the cell's centre lies inside a solid: the mean of its 8 nodal distances < 0 (the
-/// solver's rule for solid cells).
+/// Whether the cell's centre lies inside a solid (the solver's rule for solid cells).
 bool centreInSolid(const Array3f& solidNodes, int i, int j, int k) {
-  float sum = 0.0f;
-  for (int c = 0; c < 8; ++c) sum += solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
-  return sum < 0.0f;
+  return cellCentreSolidDistance(solidNodes, i, j, k) < 0.0f;
 }
 
 /// Per cell, over the 3 × 3 × 3 block around it (cells beyond the grid hold nothing): whether

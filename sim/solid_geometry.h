@@ -40,6 +40,16 @@ inline constexpr double kSolidSnapFraction = 1e-6;
 Array3f solidNodeDistance(const GridGeometry& grid, const Domain& domain,
                           std::span<const Solid> solids, double time);
 
+/// @brief The solid distance at the centre of cell (i, j, k) [m]: the mean of its 8 nodal
+///        distances, summed in float in corner order. A cell whose value is < 0 has its centre
+///        inside a solid — the solver's one rule for solid cells (pressure extension, level set,
+///        thin-wall faces).
+inline float cellCentreSolidDistance(const Array3f& solidNodes, int i, int j, int k) {
+  float sum = 0.0f;
+  for (int c = 0; c < 8; ++c) sum += solidNodes(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
+  return sum / 8.0f;
+}
+
 /// @brief Fraction [0, 1] of a triangle inside the solid (φ ≤ 0), φ linear over the triangle and
 ///        given at its vertices. Exact for a linear φ.
 double solidFractionOfTriangle(double phi0, double phi1, double phi2);

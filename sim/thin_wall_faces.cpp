@@ -1,20 +1,17 @@
 // sim/thin_wall_faces.cpp — see thin_wall_faces.h.
 #include "sim/thin_wall_faces.h"
 
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
+
+#include "sim/solid_geometry.h"
 
 namespace fluidsound::sim {
 
 std::size_t closeFacesAcrossThinWalls(std::array<Array3f, 3>& faceOpen, const Array3f& solidNodeDistance,
                                       const SolidMeshRays& meshes, const GridGeometry& grid, double time) {
   if (meshes.empty()) return 0;
-  const auto centreDistance = [&](int i, int j, int k) {
-    float sum = 0.0f;
-    for (int c = 0; c < 8; ++c) sum += solidNodeDistance(i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
-    return sum / 8.0f;
-  };
+  const auto centreDistance = [&](int i, int j, int k) { return cellCentreSolidDistance(solidNodeDistance, i, j, k); };
   std::size_t closed = 0;
   for (int a = 0; a < 3; ++a) {
     Array3f& open = faceOpen[a];
