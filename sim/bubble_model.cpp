@@ -26,9 +26,12 @@ constexpr std::uint64_t kBubbleStreamKey = 0x425542424C455321ull;
 /// differ from the expected time by rounding, never by more.
 constexpr double kTimeTolerance = 1e-9;
 
-/// Cells of depth the surface band holds beyond what the tests read (tagging band + depth growth,
-/// or the largest radius): SurfaceDistance::at needs 2 (its field margin), plus one for safety.
-constexpr double kSurfaceBandMarginCells = 3.0;
+/// Cells the surface band holds beyond the deepest (or highest) position a test reads (tagging
+/// band + depth growth, or the largest radius; the tagging band in the air): a trilinear sample
+/// reads the 8 centres around it, all within √3 ≈ 1.73 cells, so every centre a test reads holds
+/// its propagated distance, never the clamp. Deeper reads (SurfaceDistance::at beyond band − 2
+/// cells) take the exact distance to the nearest surface point instead of the field.
+constexpr double kSurfaceBandMarginCells = 1.75;
 
 /// Live bubbles per task of the motion: a drag solve takes about a microsecond, so a task of this
 /// many outweighs its scheduling.
