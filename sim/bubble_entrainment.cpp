@@ -18,8 +18,16 @@ namespace fluidsound::sim {
 
 namespace {
 
-/// Particles per parallel block: large enough to amortise a task, small enough to balance.
-constexpr std::size_t kBlockParticles = 4096;
+/// Particles per parallel block: large enough to amortise a task (a block costs tens of µs when
+/// its particles are near the surface, about 150 ns each), small enough that a pour of a few
+/// thousand particles, all near the surface, still spreads over the threads.
+constexpr std::size_t kBlockParticles = 512;
+/// The whole-grid "beyond the band" table (beyondBandStencils, about 2 ns per cell) is built only
+/// when there is at least one particle per this many cells: each deep particle it lets skip saves
+/// an interpolation (about 15 ns), so with fewer particles (a glass pour: 2 500 particles, nearly
+/// all near the surface, in 41 000 cells) the table costs more than it saves. Either way the
+/// decisions are the same.
+constexpr std::size_t kCellsPerParticleForTable = 8;
 /// Filter bits per record: a deep particle passes the filter (and pays a binary search) with
 /// probability ≈ 1/kFilterBitsPerTag.
 constexpr std::size_t kFilterBitsPerTag = 16;
@@ -184,8 +192,10 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   const bool speedTest = std::isfinite(settings.entrainmentSpeed);
   if (!entrainmentUsesVelocityRange(settings)) range = nullptr;  // a probe beyond its reach
   const double boundBelow = settings.entrainmentSpeed * (1.0 - kSpeedBoundMargin);
-  const std::vector<std::uint8_t> beyondBand = beyondBandStencils(liquid.liquidDistance, band);
   const std::size_t n = liquid.particlePositions.size();
+  const std::vector<std::uint8_t> beyondBand = n * kCellsPerParticleForTable >= liquid.liquidDistance.values().size()
+                                                   ? beyondBandStencils(liquid.liquidDistance, band)
+                                                   : std::vector<std::uint8_t>{};
   std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
   forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
     BlockResult& out = blocks[b];
@@ -195,7 +205,7 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
       const EntrainmentTag* old = previous.find(liquid.particleIds[p]);
       // Deep or far, and no record: nothing to do (most particles), decided without the
       // interpolation.
-      if (!old && beyondBand[stencilBase(liquid.grid, x)]) continue;
+      if (!old && !beyondBand.empty() && beyondBand[stencilBase(liquid.grid, x)]) continue;
       const double phi = interpolateCellCentres(liquid.liquidDistance, liquid.grid, x);
       const bool inBand = std::abs(phi) <= band;
       if (!old && !inBand) continue;

@@ -75,8 +75,9 @@ struct EntrainmentStep {
 ///          (v_p − u(x − n·probeCells·h))·(−n) ≥ entrainmentSpeed, n = ∇φ/|∇φ|;
 ///        - otherwise a closed window reopens at (time, d) if |φ| ≤ band, or the record is dropped.
 /// @param liquid    its liquidDistance is read as a true signed distance. Two shortcuts leave the
-///                  decisions unchanged: a particle without a record whose interpolation stencil
-///                  lies wholly beyond ±band is skipped unread, and a speed test that the range of
+///                  decisions unchanged: with many particles per cell, a particle without a record
+///                  whose interpolation stencil lies wholly beyond ±band is skipped unread (with
+///                  few, the whole-grid table costs more than it saves), and a speed test that the range of
 ///                  the grid velocity around the particle cannot pass (velocity_range.h) is not run
 /// @param previous  the tags returned by the previous step (empty at the start)
 /// @note Bit-identical for any thread count and any order of the particle arrays: particles are
