@@ -29,9 +29,9 @@ constexpr int kBucketCells = 4;
 constexpr double kFieldMarginCells = 2.0;
 /// Key width of one bucket of the propagation front [cells²]: a few entries per bucket.
 constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
-/// Cells per task of the whole-grid passes: a pass over this many cells takes tens of µs, far more
-/// than a task costs; below it, waking another thread costs more than it saves.
-constexpr std::size_t kCellsPerTask = std::size_t{1} << 16;
+/// Cells per task of the whole-grid passes: a pass over this many cells takes about 10 µs, far more
+/// than a task costs, and a grid of 41 000 cells (the glass pour) still spreads over the threads.
+constexpr std::size_t kCellsPerTask = std::size_t{1} << 13;
 /// `limit` of a surface cell: below every squared distance, so no propagated point replaces its own.
 constexpr double kNeverReplaced = -1.0;
 
