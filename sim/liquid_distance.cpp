@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -140,7 +141,10 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   // 0. Phases. A cell is solid when the sum of its 8 nodal solid distances is negative; the solid
   //    cells are found again only when the nodal distances change (static solids: never).
   const std::vector<float>& nodes = solidNodeDistance.values();
-  if (nodes != solidNodes_ || solidCells_.size() != n) {
+  // Compared as bytes (a vectorised memcmp, ~10× faster than comparing floats one by one): equal
+  // bytes are equal floats, and bytes that differ between equal floats (±0) only recompute.
+  if (nodes.size() != solidNodes_.size() || solidCells_.size() != n ||
+      std::memcmp(nodes.data(), solidNodes_.data(), nodes.size() * sizeof(float)) != 0) {
     solidNodes_ = nodes;
     solidCells_.resize(n);
     tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
