@@ -20,8 +20,8 @@ namespace {
 
 /// Particles per parallel block: large enough to amortise a task (a block costs tens of µs when
 /// its particles are near the surface, about 150 ns each), small enough that a pour of a few
-/// thousand particles, all near the surface, still spreads over the threads.
-constexpr std::size_t kBlockParticles = 512;
+/// thousand particles, all near the surface, spreads evenly over the threads (2 500: 10 blocks).
+constexpr std::size_t kBlockParticles = 256;
 /// The whole-grid "beyond the band" table (beyondBandStencils, about 2 ns per cell) is built only
 /// when there is at least one particle per this many cells: each deep particle it lets skip saves
 /// an interpolation (about 15 ns), so with fewer particles (a glass pour: 2 500 particles, nearly
