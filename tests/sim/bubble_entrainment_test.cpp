@@ -1,6 +1,7 @@
 // tests/sim/bubble_entrainment_test.cpp — entrainment detection: the speed-into-the-liquid test
 // and its threshold, no entrainment by liquid moving as a whole, the depth-growth window, seed
-// potential decay and lifetime, independence of the particle arrays' order, unique ids.
+// potential decay and lifetime, independence of the particle arrays' order, shortcuts that change
+// no decision, unique ids.
 #include "sim/bubble_entrainment.h"
 
 #include <gtest/gtest.h>
@@ -130,6 +131,52 @@ TEST(BubbleEntrainment, ResultDoesNotDependOnTheOrderOfTheParticleArrays) {
   ASSERT_GT(a.newSeeds, 10u);
   EXPECT_TRUE(std::ranges::equal(a.tags.tags(), b.tags.tags()));
   EXPECT_TRUE(a.seeds == b.seeds);
+}
+
+TEST(BubbleEntrainment, ShortcutsForManyParticlesChangeNoDecision) {
+  // Claim: the whole-grid "beyond the band" table (built only with at least one particle per 8
+  // cells) and the velocity range are shortcuts: the tank's near-surface particles in a small patch
+  // get the same records and seeds alone (fewer than one particle per 8 cells: no table) as among
+  // all the tank's particles (8 per cell: table built), and the same with or without a
+  // VelocityRange. Reference: the patch alone, without a range. Tolerance: exact equality.
+  SyntheticTank tank(kCells, kCell, kSurface, kSeed);
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> speed(-2.5, 0.5);
+  for (Vec3f& v : tank.velocities()) v = {0.0f, static_cast<float>(speed(random)), 0.0f};
+  SyntheticTank patch = tank;
+  patch.positions().clear(), patch.velocities().clear(), patch.ids().clear();
+  for (std::size_t p = 0; p < tank.size(); ++p) {
+    const Vec3f& x = tank.positions()[p];
+    if (x[1] > kSurface - 1.5 * kCell && x[0] > 4 * kCell && x[0] < 9 * kCell && x[2] > 4 * kCell &&
+        x[2] < 9 * kCell) {
+      patch.positions().push_back(x), patch.velocities().push_back(tank.velocities()[p]);
+      patch.ids().push_back(tank.ids()[p]);
+    }
+  }
+  const std::size_t cells = static_cast<std::size_t>(kCells) * kCells * kCells;
+  std::cout << "[ measured ] " << tank.size() << " particles in all, " << patch.size() << " in the patch, " << cells
+            << " cells\n";
+  ASSERT_GE(tank.size() * 8, cells);
+  ASSERT_LT(patch.size() * 8, cells);
+  const BubbleSettings settings;
+  const EntrainmentStep alone = detectEntrainment(patch.state(), {}, settings, 0.0, nullptr);
+  const EntrainmentStep aloneWithRange = detectEntrainment(patch.state(), {}, settings, 0.0);
+  const EntrainmentStep all = detectEntrainment(tank.state(), {}, settings, 0.0);
+  ASSERT_GT(alone.newSeeds, 10u);
+  EXPECT_TRUE(std::ranges::equal(alone.tags.tags(), aloneWithRange.tags.tags()));
+  EXPECT_TRUE(alone.seeds == aloneWithRange.seeds);
+  // The patch's own records and seeds among all of the tank's.
+  std::vector<std::uint64_t> ids = patch.ids();
+  std::ranges::sort(ids);
+  const auto inPatch = [&](std::uint64_t id) { return std::ranges::binary_search(ids, id); };
+  std::vector<EntrainmentTag> tags;
+  for (const EntrainmentTag& t : all.tags.tags())
+    if (inPatch(t.particleId)) tags.push_back(t);
+  std::vector<BubbleSeed> seeds;
+  for (const BubbleSeed& s : all.seeds)
+    if (inPatch(s.particleId)) seeds.push_back(s);
+  EXPECT_TRUE(std::ranges::equal(alone.tags.tags(), tags));
+  EXPECT_TRUE(alone.seeds == seeds);
 }
 
 TEST(BubbleEntrainment, RecordsAreFoundWhateverTheIds) {
