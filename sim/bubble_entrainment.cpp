@@ -193,9 +193,10 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   if (!entrainmentUsesVelocityRange(settings)) range = nullptr;  // a probe beyond its reach
   const double boundBelow = settings.entrainmentSpeed * (1.0 - kSpeedBoundMargin);
   const std::size_t n = liquid.particlePositions.size();
-  const std::vector<std::uint8_t> beyondBand = n * kCellsPerParticleForTable >= liquid.liquidDistance.values().size()
-                                                   ? beyondBandStencils(liquid.liquidDistance, band)
-                                                   : std::vector<std::uint8_t>{};
+  const std::vector<std::uint8_t> beyondBand =
+      n * kCellsPerParticleForTable >= liquid.liquidDistance.values().size()
+          ? beyondBandStencils(liquid.liquidDistance, band)
+          : std::vector<std::uint8_t>{};
   std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
   forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
     BlockResult& out = blocks[b];

@@ -77,8 +77,9 @@ struct EntrainmentStep {
 /// @param liquid    its liquidDistance is read as a true signed distance. Two shortcuts leave the
 ///                  decisions unchanged: with many particles per cell, a particle without a record
 ///                  whose interpolation stencil lies wholly beyond ±band is skipped unread (with
-///                  few, the whole-grid table costs more than it saves), and a speed test that the range of
-///                  the grid velocity around the particle cannot pass (velocity_range.h) is not run
+///                  few, the whole-grid table costs more than it saves), and a speed test that the
+///                  range of the grid velocity around the particle cannot pass (velocity_range.h)
+///                  is not run
 /// @param previous  the tags returned by the previous step (empty at the start)
 /// @note Bit-identical for any thread count and any order of the particle arrays: particles are
 ///       processed in fixed blocks and records and seeds are sorted by particle id.

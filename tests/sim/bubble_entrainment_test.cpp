@@ -154,8 +154,8 @@ TEST(BubbleEntrainment, ShortcutsForManyParticlesChangeNoDecision) {
     }
   }
   const std::size_t cells = static_cast<std::size_t>(kCells) * kCells * kCells;
-  std::cout << "[ measured ] " << tank.size() << " particles in all, " << patch.size() << " in the patch, " << cells
-            << " cells\n";
+  std::cout << "[ measured ] " << tank.size() << " particles in all, " << patch.size()
+            << " in the patch, " << cells << " cells\n";
   ASSERT_GE(tank.size() * 8, cells);
   ASSERT_LT(patch.size() * 8, cells);
   const BubbleSettings settings;
