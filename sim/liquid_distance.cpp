@@ -43,9 +43,14 @@ enum Phase : std::uint8_t { kAir = 0, kLiquid = 1, kSolid = 2 };
 }  // namespace
 
 /// The propagation front: (squared distance, cell) entries popped smallest first, ties by cell
-/// index. A bucket queue: entries are listed by key in buckets of fixed width, and a pop takes the
-/// smallest of the first non-empty bucket. Every entry's key is unique (a cell is pushed again
-/// only when strictly closer), so it pops in the same order as any other exact priority queue.
+/// index. A bucket queue: entries are listed by key in buckets of fixed width; the lowest
+/// non-empty bucket is taken out sorted (the run) and popped from its end, and an entry pushed
+/// into a bucket at or below the run's is inserted in the run in order. Every entry's key is
+/// unique (a cell is pushed again only when strictly closer), so it pops in the same order as any
+/// other exact priority queue. Sorting the run, not scanning its bucket for each pop, keeps a
+/// crowded bucket cheap: still water under a flat level puts every surface cell's point at the
+/// same distance, a bucket of thousands that a scan per pop made quadratic (a still basin's
+/// bubble model: 34 s for 2 s of water, now 1 s).
 class SurfaceDistance::NearestFirst {
  public:
   struct Entry {
@@ -61,26 +66,34 @@ class SurfaceDistance::NearestFirst {
     const std::size_t buckets = static_cast<std::size_t>(largest * scale_) + 2;
     if (first_.size() != buckets || size_ != 0) first_.assign(buckets, kNone);
     pool_.clear();
+    run_.clear();
     cursor_ = 0;
     size_ = 0;
   }
   bool empty() const { return size_ == 0; }
   void push(const Entry& e) {
+    ++size_;
     const std::size_t b = std::min(static_cast<std::size_t>(e.key * scale_), first_.size() - 1);
+    if (!run_.empty() && b <= runBucket_) {  // among or before the run's entries: in order
+      run_.insert(std::lower_bound(run_.begin(), run_.end(), e, [](const Entry& in, const Entry& x) { return x < in; }), e);
+      return;
+    }
     pool_.push_back({e, first_[b]});
     first_[b] = static_cast<std::uint32_t>(pool_.size() - 1);
     cursor_ = std::min(cursor_, b);
-    ++size_;
   }
   Entry pop() {
-    while (first_[cursor_] == kNone) ++cursor_;
-    std::uint32_t* link = &first_[cursor_];  // the link to the smallest entry found so far
-    for (std::uint32_t* at = &pool_[*link].next; *at != kNone; at = &pool_[*at].next)
-      if (pool_[*at].entry < pool_[*link].entry) link = at;
-    const Node& smallest = pool_[*link];
-    *link = smallest.next;
+    if (run_.empty()) {  // the lowest non-empty bucket becomes the run, largest first
+      while (first_[cursor_] == kNone) ++cursor_;
+      for (std::uint32_t at = first_[cursor_]; at != kNone; at = pool_[at].next) run_.push_back(pool_[at].entry);
+      first_[cursor_] = kNone;
+      runBucket_ = cursor_;
+      std::sort(run_.begin(), run_.end(), [](const Entry& a, const Entry& b) { return b < a; });
+    }
+    const Entry smallest = run_.back();
+    run_.pop_back();
     --size_;
-    return smallest.entry;
+    return smallest;
   }
 
  private:
@@ -92,6 +105,8 @@ class SurfaceDistance::NearestFirst {
   double scale_ = 1.0;
   std::vector<std::uint32_t> first_;  ///< first node of each bucket
   std::vector<Node> pool_;
+  std::vector<Entry> run_;            ///< the entries of buckets ≤ runBucket_, largest first
+  std::size_t runBucket_ = 0;
   std::size_t cursor_ = 0, size_ = 0;
 };
 
