@@ -1,10 +1,11 @@
 // The bubble model's cost against the liquid solver's (not a test): the whole of
-// scenes/glass_pour.scene.json (the issue's scene), scenes/dam_break.scene.json and
-// scenes/pour_tank.scene.json with the bubble model attached as
-// `fluidsound simulate` runs it, reporting the fluid stage's seconds (the solver's substeps and
-// once-per-frame particle maintenance), the bubble model's seconds and its share of the fluid stage
-// (issue 6: bubble model and transfer together under 10 %; the transfer stage is timed by
-// tools/bench.sh through `fluidsound run`).
+// scenes/glass_pour.scene.json (the issue's scene), scenes/dam_break.scene.json,
+// scenes/pour_tank.scene.json and scenes/still_basin.scene.json (still water under a flat level:
+// every surface point at one distance, which once made the distance propagation quadratic) with
+// the bubble model attached as `fluidsound simulate` runs it, reporting the fluid stage's seconds
+// (the solver's substeps and once-per-frame particle maintenance), the bubble model's seconds and
+// its share of the fluid stage (issue 6: bubble model and transfer together under 10 %; the
+// transfer stage is timed by tools/bench.sh through `fluidsound run`).
 //   build/tests/fluidsound_bench --benchmark_filter=BubbleShare
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
@@ -54,5 +55,6 @@ void BM_BubbleShare(benchmark::State& state, const std::string& sceneName) {
 BENCHMARK_CAPTURE(BM_BubbleShare, glass_pour, std::string("glass_pour"))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 BENCHMARK_CAPTURE(BM_BubbleShare, dam_break, std::string("dam_break"))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 BENCHMARK_CAPTURE(BM_BubbleShare, pour_tank, std::string("pour_tank"))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK_CAPTURE(BM_BubbleShare, still_basin, std::string("still_basin"))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 }  // namespace
