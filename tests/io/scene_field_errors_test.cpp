@@ -178,6 +178,8 @@ const std::vector<FieldCase> kFieldCases = {
      "a number > 0 (metres)", kRequired},
     {"emitter_disk_radius_negative", "/emitters/0/disk/radius", "-0.004", "emitters[0].disk.radius",
      "a number > 0 (metres)", "-0.004"},
+    {"emitter_disk_radius_zero", "/emitters/0/disk/radius", "0", "emitters[0].disk.radius",
+     "a number > 0 (metres)", "0"},
     {"emitter_disk_radius_string", "/emitters/0/disk/radius", R"("4mm")", "emitters[0].disk.radius",
      "a number > 0 (metres)", R"("4mm")"},
     {"emitter_disk_unknown_key", "/emitters/0/disk/diameter", "0.008", "emitters[0].disk.diameter",
