@@ -12,7 +12,14 @@ namespace fluidsound::io {
 sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region, const sim::Array3f& solidNodes,
                                         const sim::GridGeometry& grid) {
   const double contact = sim::kSolidContactCells * grid.cellSize;
-  const auto againstSolid = [&](const sim::Vec3& p) { return sim::interpolateNodes(solidNodes, grid, p) <= contact; };
+  // On (or beyond) the grid's boundary — a closed wall, or an open face the liquid runs on
+  // through — or against a solid.
+  const auto againstSolid = [&](const sim::Vec3& p) {
+    for (int a = 0; a < 3; ++a)
+      if (p[a] <= grid.origin[a] + contact || p[a] >= grid.origin[a] + grid.cells[a] * grid.cellSize - contact)
+        return true;
+    return sim::interpolateNodes(solidNodes, grid, p) <= contact;
+  };
   sim::TriangleMesh free;
   free.vertices = region.vertices;
   for (const auto& t : region.triangles) {

@@ -12,9 +12,10 @@ namespace fluidsound::io {
 
 /// @brief Signed distance [m] at the solver grid's cell centres to the free part of a closed
 ///        liquid-region mesh (placed, world coordinates): its triangles that do not lie against
-///        a solid — a triangle lies against one when the solid distance (`solidNodes`
-///        interpolated) at its three corners and its centroid is at most
-///        sim::kSolidContactCells·h. Inside the region: minus the distance to the nearest free
+///        a solid or on the grid's boundary — a triangle does when each of its three corners and
+///        its centroid has a solid distance (`solidNodes` interpolated) of at most
+///        sim::kSolidContactCells·h or lies that close to the boundary (a closed wall, or an open
+///        face the liquid runs on through). Inside the region: minus the distance to the nearest free
 ///        triangle (exact near it, io/mesh_distance.h), −3h beyond the band or when no triangle
 ///        is free; outside: the distance to the whole mesh. Sampled at the centres themselves,
 ///        not interpolated from nodes, which reads a convex edge up to ½h shallow.

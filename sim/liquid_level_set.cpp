@@ -68,24 +68,28 @@ Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
 }
 
 /// Signed distance [m] from x to the free faces of box b: outside it, the distance to the box;
-/// inside, the distance to the nearest face whose foot point (x projected on the face) is not
-/// against a solid (kSolidContactCells; `solidNodes`, domain walls included). Water poured into a tank up to its
-/// walls, or overlapping them, has no surface there: its level is y − H right up to the wall, as
-/// in the middle (the box's own distance would read the wall cells up to half a cell shallower,
-/// a slope the pressure solve turns into a flow). kFarCells·h deep where every face is against a
-/// solid.
+/// inside, the distance to the nearest face that lies neither on the grid's boundary (a closed
+/// wall, or an open face the liquid runs on through) nor against a solid — its foot point (x
+/// projected on the face) more than kSolidContactCells from one (`solidNodes`). Water poured
+/// into a tank up to its walls, or overlapping them, has no surface there: its level is y − H
+/// right up to the wall, as in the middle (the box's own distance would read the wall cells up
+/// to half a cell shallower, a slope the pressure solve turns into a flow). kFarCells·h deep
+/// where no face is free.
 double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes, const GridGeometry& grid) {
   const double outside = regionDistance(LiquidRegion{b, {}}, x);
   if (outside > 0.0) return outside;
   const double contact = kSolidContactCells * grid.cellSize;
   double depth = kFarCells * grid.cellSize;
-  for (int a = 0; a < 3; ++a)
+  for (int a = 0; a < 3; ++a) {
+    const double lowest = grid.origin[a] + contact, highest = grid.origin[a] + grid.cells[a] * grid.cellSize - contact;
     for (const double plane : {b.min[a], b.max[a]}) {
+      if (plane <= lowest || plane >= highest) continue;  // on the grid's boundary
       Vec3 foot = x;
       foot[a] = plane;
       if (interpolateNodes(solidNodes, grid, foot) <= contact) continue;
       depth = std::min(depth, std::abs(x[a] - plane));
     }
+  }
   return -depth;
 }
 
@@ -113,7 +117,8 @@ LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid, con
       for (int i = 0; i < grid.cells[0]; ++i) {
         const Vec3 x = grid.cellCentre(i, j, k);
         double region = kFarCells * grid.cellSize;
-        for (const LiquidRegion& r : scene.liquid) region = std::min(region, freeRegionDistance(r, i, j, k, solidNodes, grid));
+        for (const LiquidRegion& r : scene.liquid)
+          region = std::min(region, freeRegionDistance(r, i, j, k, solidNodes, grid));
         // Inside a solid: air (the solid's own depth), the solid holds no liquid.
         const double solid = interpolateNodes(solidNodes, grid, x);
         phi_(i, j, k) = static_cast<float>(solid < 0.0 ? std::max(region, -solid) : region);

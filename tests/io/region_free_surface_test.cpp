@@ -75,6 +75,23 @@ TEST(RegionFreeSurface, FacesAgainstSolidsAndWallsAreNoSurface) {
   EXPECT_FLOAT_EQ(phi(10, 1, 5), static_cast<float>(-3 * kCell));
 }
 
+// Claim: faces on the grid's boundary are no surface when the domain face is open as well (the
+// liquid runs on through it): water filling a fully open box up to y = H reads y − H in every
+// column within 1.5 cells of its top, the columns at the open sides included.
+// Reference: y − H. Tolerance: 1e-5 h (float rounding of the exact distance).
+TEST(RegionFreeSurface, FacesOnOpenDomainFacesAreNoSurface) {
+  sim::Domain domain = tankDomain();
+  domain.open.fill(true);
+  const sim::GridGeometry grid = gridOf(domain);
+  const sim::Array3f solidNodes = sim::solidNodeDistance(grid, domain, {}, 0.0);
+  const sim::TriangleMesh water = test::boxMesh({0.0f, 0.0f, 0.0f}, {0.16f, static_cast<float>(kLevel), 0.16f});
+  const sim::Array3f phi = regionFreeSurfaceAtCentres(water, solidNodes, grid);
+  for (int k = 0; k < 16; ++k)
+    for (int j = 6; j <= 8; ++j)
+      for (int i = 0; i < 16; ++i)
+        EXPECT_NEAR(phi(i, j, k), grid.cellCentre(i, j, k)[1] - kLevel, 1e-5 * kCell) << i << " " << j << " " << k;
+}
+
 // Claim: a region clear of every solid and wall is all free surface: the distance at the
 // centres is the box's own, exact near its surface — its convex edges included, where values
 // interpolated from the nodes read up to half a cell shallow.

@@ -102,6 +102,21 @@ TEST(LiquidLevelSet, ARegionsFacesAgainstASolidAreNoSurface) {
   EXPECT_NEAR(free.phi()(3, 5, 5), -(beside[0] - wallX), 1e-6);
 }
 
+// Claim: a box region's faces on the grid's boundary are no surface whether the domain face is
+// a closed wall or open (the liquid runs on through an open face; only a closed wall has a solid
+// distance to test): with every face open the start level is still y − H in every column.
+// Reference: y − H, exact up to float rounding.
+TEST(LiquidLevelSet, ABoxsFacesOnOpenDomainFacesAreNoSurface) {
+  Scene scene = tank();
+  scene.domain.open.fill(true);
+  const GridGeometry g = scene.grid();
+  const LiquidLevelSet level(scene, g, nodesOf(scene, true));
+  for (int k = 0; k < 16; ++k)
+    for (int j = 0; j < 11; ++j)
+      for (int i = 0; i < 16; ++i)
+        EXPECT_NEAR(level.phi()(i, j, k), g.cellCentre(i, j, k)[1] - kLevel, 1e-6) << i << " " << j << " " << k;
+}
+
 // Claim: in still liquid (zero velocity) the hold moves φ only where it leaves the band of
 // ±bandCells around the particle surface, and then onto its edge; at the trust speed and above
 // the band is 0 and φ is the particle surface. Cells with a particle or two around and none full
