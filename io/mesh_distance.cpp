@@ -53,8 +53,8 @@ namespace {
 /// The band of `mesh` sampled at the grid's nodes by meshToVolume with `flags`, clamped to
 /// [lowest, halfWidthCells·h]; see meshNodeDistance.
 sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings, int flags,
-                              bool isSigned) {
+                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings,
+                              int flags, bool isSigned) {
   if (!(placement.scale > 0.0) || !std::isfinite(placement.scale))
     throw std::invalid_argument("meshNodeDistance: scale must be finite and > 0, is " +
                                 std::to_string(placement.scale));
@@ -92,13 +92,16 @@ sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement
 
 sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
                               const sim::GridGeometry& grid, const MeshDistanceSettings& settings) {
-  return sampleMeshVolume(mesh, placement, grid, settings, openvdb::tools::DISABLE_RENORMALIZATION, true);
+  return sampleMeshVolume(mesh, placement, grid, settings, openvdb::tools::DISABLE_RENORMALIZATION,
+                          true);
 }
 
 sim::Array3f meshNodeUnsignedDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                                      const sim::GridGeometry& grid, const MeshDistanceSettings& settings) {
-  return sampleMeshVolume(mesh, placement, grid, settings,
-                          openvdb::tools::UNSIGNED_DISTANCE_FIELD | openvdb::tools::DISABLE_RENORMALIZATION, false);
+                                      const sim::GridGeometry& grid,
+                                      const MeshDistanceSettings& settings) {
+  return sampleMeshVolume(
+      mesh, placement, grid, settings,
+      openvdb::tools::UNSIGNED_DISTANCE_FIELD | openvdb::tools::DISABLE_RENORMALIZATION, false);
 }
 
 }  // namespace fluidsound::io

@@ -9,14 +9,16 @@
 
 namespace fluidsound::io {
 
-sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region, const sim::Array3f& solidNodes,
+sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
+                                        const sim::Array3f& solidNodes,
                                         const sim::GridGeometry& grid) {
   const double contact = sim::kSolidContactCells * grid.cellSize;
   // On (or beyond) the grid's boundary — a closed wall, or an open face the liquid runs on
   // through — or against a solid.
-  const auto againstSolid = [&](const sim::Vec3& p) {
+  const auto againstWallOrSolid = [&](const sim::Vec3& p) {
     for (int a = 0; a < 3; ++a)
-      if (p[a] <= grid.origin[a] + contact || p[a] >= grid.origin[a] + grid.cells[a] * grid.cellSize - contact)
+      if (p[a] <= grid.origin[a] + contact ||
+          p[a] >= grid.origin[a] + grid.cells[a] * grid.cellSize - contact)
         return true;
     return sim::interpolateNodes(solidNodes, grid, p) <= contact;
   };
@@ -29,7 +31,8 @@ sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region, const s
         corner[v][a] = region.vertices[t[v]][a];
         centroid[a] += corner[v][a] / 3.0;
       }
-    if (!(againstSolid(corner[0]) && againstSolid(corner[1]) && againstSolid(corner[2]) && againstSolid(centroid)))
+    if (!(againstWallOrSolid(corner[0]) && againstWallOrSolid(corner[1]) &&
+          againstWallOrSolid(corner[2]) && againstWallOrSolid(centroid)))
       free.triangles.push_back(t);
   }
   // A grid whose nodes are the cell centres: the samples are taken there, not interpolated.

@@ -15,14 +15,15 @@ namespace fluidsound::io {
 ///        a solid or on the grid's boundary — a triangle does when each of its three corners and
 ///        its centroid has a solid distance (`solidNodes` interpolated) of at most
 ///        sim::kSolidContactCells·h or lies that close to the boundary (a closed wall, or an open
-///        face the liquid runs on through). Inside the region: minus the distance to the nearest free
-///        triangle (exact near it, io/mesh_distance.h), −3h beyond the band or when no triangle
-///        is free; outside: the distance to the whole mesh. Sampled at the centres themselves,
-///        not interpolated from nodes, which reads a convex edge up to ½h shallow.
+///        face the liquid runs on through). Inside the region: minus the distance to the nearest
+///        free triangle (exact near it, io/mesh_distance.h), −3h beyond the band or when no
+///        triangle is free; outside: the distance to the whole mesh. Sampled at the centres
+///        themselves, not interpolated from nodes, which reads a convex edge up to ½h shallow.
 /// @param solidNodes  the solids' signed distance at the grid nodes, closed domain walls
 ///                    included (sim::solidNodeDistance at the start time) [m]
 /// @return size grid.cells
-sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region, const sim::Array3f& solidNodes,
+sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
+                                        const sim::Array3f& solidNodes,
                                         const sim::GridGeometry& grid);
 
 }  // namespace fluidsound::io

@@ -29,9 +29,9 @@ sim::TriangleMesh placedMesh(sim::TriangleMesh mesh, double scale, const sim::Ve
   sim::Vec3 centre{};
   for (int a = 0; a < 3; ++a) centre[a] = 0.5 * (lower[a] + upper[a]);
   for (auto& v : mesh.vertices) {
-    const sim::Vec3 turned =
-        sim::rotateByEulerDegrees({scale * v[0] - centre[0], scale * v[1] - centre[1], scale * v[2] - centre[2]},
-                                  rotateDegrees);
+    const sim::Vec3 turned = sim::rotateByEulerDegrees(
+        {scale * v[0] - centre[0], scale * v[1] - centre[1], scale * v[2] - centre[2]},
+        rotateDegrees);
     for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(centre[a] + turned[a] + translate[a]);
   }
   return mesh;
@@ -58,8 +58,9 @@ void loadSceneMeshes(sim::Scene& scene) {
   std::vector<std::pair<sim::MeshFile*, sim::TriangleMesh>> regions;
   for (std::size_t i = 0; i < scene.liquid.size(); ++i)
     if (auto* mesh = std::get_if<sim::MeshFile>(&scene.liquid[i].shape))
-      regions.emplace_back(mesh, loadMesh(*mesh, [](sim::TriangleMesh m) { return m; }, scene,
-                                          "liquid[" + std::to_string(i) + "].mesh", false));
+      regions.emplace_back(mesh, loadMesh(
+                                     *mesh, [](sim::TriangleMesh m) { return m; }, scene,
+                                     "liquid[" + std::to_string(i) + "].mesh", false));
   for (std::size_t i = 0; i < scene.solids.size(); ++i) {
     sim::Solid& solid = scene.solids[i];
     auto* mesh = std::get_if<sim::MeshFile>(&solid.shape);
@@ -71,7 +72,8 @@ void loadSceneMeshes(sim::Scene& scene) {
   }
   if (regions.empty()) return;
   // Where each mesh region's surface is free, against the solids where they start.
-  const sim::Array3f solidNodes = sim::solidNodeDistance(scene.grid(), scene.domain, scene.solids, 0.0);
+  const sim::Array3f solidNodes =
+      sim::solidNodeDistance(scene.grid(), scene.domain, scene.solids, 0.0);
   for (auto& [file, mesh] : regions) {
     auto distance = std::make_shared<sim::MeshNodeDistance>(*file->distance);
     distance->freeSurfaceAtCentres = regionFreeSurfaceAtCentres(mesh, solidNodes, distance->grid);

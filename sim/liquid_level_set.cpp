@@ -1,13 +1,13 @@
 // sim/liquid_level_set.cpp — see liquid_level_set.h.
 #include "sim/liquid_level_set.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <variant>
 #include <vector>
-
-#include <tbb/parallel_for.h>
 
 #include "sim/cell_interpolation.h"
 #include "sim/liquid_surface.h"
@@ -35,7 +35,8 @@ bool centreInSolid(const Array3f& solidNodes, int i, int j, int k) {
 /// Per cell, over the 3 × 3 × 3 block around it (cells beyond the grid hold nothing): whether
 /// every cell holds at least `fullCount` particles (bit 1) and whether any particle is there
 /// (bit 2). Separable passes along x, y, z.
-Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n, std::size_t fullCount) {
+Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
+                                        std::size_t fullCount) {
   constexpr std::uint8_t kFull = 1, kAny = 2;
   Array3<std::uint8_t> flags(n, 0), pass(n, 0);
   auto& f = flags.values();
@@ -55,7 +56,9 @@ Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
               full = 0;
               continue;
             }
-            const std::uint8_t v = a == 0 ? flags(m, j, k) : a == 1 ? flags(i, m, k) : flags(i, j, m);
+            const std::uint8_t v = a == 0   ? flags(m, j, k)
+                                   : a == 1 ? flags(i, m, k)
+                                            : flags(i, j, m);
             full &= v;
             any |= v & kAny;
           }
@@ -75,13 +78,15 @@ Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
 /// right up to the wall, as in the middle (the box's own distance would read the wall cells up
 /// to half a cell shallower, a slope the pressure solve turns into a flow). kFarCells·h deep
 /// where no face is free.
-double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes, const GridGeometry& grid) {
+double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes,
+                       const GridGeometry& grid) {
   const double outside = regionDistance(LiquidRegion{b, {}}, x);
   if (outside > 0.0) return outside;
   const double contact = kSolidContactCells * grid.cellSize;
   double depth = kFarCells * grid.cellSize;
   for (int a = 0; a < 3; ++a) {
-    const double lowest = grid.origin[a] + contact, highest = grid.origin[a] + grid.cells[a] * grid.cellSize - contact;
+    const double lowest = grid.origin[a] + contact,
+                 highest = grid.origin[a] + grid.cells[a] * grid.cellSize - contact;
     for (const double plane : {b.min[a], b.max[a]}) {
       if (plane <= lowest || plane >= highest) continue;  // on the grid's boundary
       Vec3 foot = x;
@@ -97,19 +102,23 @@ double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes, c
 double freeRegionDistance(const LiquidRegion& r, int i, int j, int k, const Array3f& solidNodes,
                           const GridGeometry& grid) {
   const Vec3 x = grid.cellCentre(i, j, k);
-  if (const auto* box = std::get_if<Box>(&r.shape)) return freeBoxDistance(*box, x, solidNodes, grid);
+  if (const auto* box = std::get_if<Box>(&r.shape))
+    return freeBoxDistance(*box, x, solidNodes, grid);
   if (const auto* mesh = std::get_if<MeshFile>(&r.shape);
-      mesh != nullptr && mesh->distance && mesh->distance->freeSurfaceAtCentres.size() == grid.cells)
+      mesh != nullptr && mesh->distance &&
+      mesh->distance->freeSurfaceAtCentres.size() == grid.cells)
     return mesh->distance->freeSurfaceAtCentres(i, j, k);
   return regionDistance(r, x);
 }
 }  // namespace
 
-double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes, const GridGeometry& grid) {
+double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes,
+                                 const GridGeometry& grid) {
   return liquidVolume(phi, grid, &sceneSolidNodes);
 }
 
-LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid, const Array3f& solidNodes)
+LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid,
+                               const Array3f& solidNodes)
     : grid_(grid), phi_(grid.cells, static_cast<float>(kFarCells * grid.cellSize)) {
   if (scene.liquid.empty()) return;
   tbb::parallel_for(0, grid.cells[2], [&](int k) {
@@ -126,11 +135,13 @@ LiquidLevelSet::LiquidLevelSet(const Scene& scene, const GridGeometry& grid, con
   });
 }
 
-void LiquidLevelSet::holdToParticles(const Array3f& particlePhi, const CellIndex& index, const MacVelocity& velocity,
-                                     const Array3f& sceneSolidNodes, const LevelSetHold& hold) {
+void LiquidLevelSet::holdToParticles(const Array3f& particlePhi, const CellIndex& index,
+                                     const MacVelocity& velocity, const Array3f& sceneSolidNodes,
+                                     const LevelSetHold& hold) {
   const Index3 n = grid_.cells;
   const double h = grid_.cellSize;
-  const Array3<std::uint8_t> flags = neighbourhoodFlags(index, n, static_cast<std::size_t>(hold.fullCount));
+  const Array3<std::uint8_t> flags =
+      neighbourhoodFlags(index, n, static_cast<std::size_t>(hold.fullCount));
   tbb::parallel_for(0, n[2], [&](int k) {
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
@@ -153,8 +164,10 @@ void LiquidLevelSet::holdToParticles(const Array3f& particlePhi, const CellIndex
         const double uy = 0.5 * (velocity[1](i, j, k) + velocity[1](i, j + 1, k));
         const double uz = 0.5 * (velocity[2](i, j, k) + velocity[2](i, j, k + 1));
         const double speed = std::sqrt(ux * ux + uy * uy + uz * uz);
-        const double band = hold.bandCells * h * std::clamp(1.0 - speed / hold.trustSpeed, 0.0, 1.0);
-        phi = std::clamp(phi, static_cast<float>(particle - band), static_cast<float>(particle + band));
+        const double band =
+            hold.bandCells * h * std::clamp(1.0 - speed / hold.trustSpeed, 0.0, 1.0);
+        phi = std::clamp(phi, static_cast<float>(particle - band),
+                         static_cast<float>(particle + band));
       }
   });
   keepSolidsDry(sceneSolidNodes);
@@ -164,20 +177,22 @@ void LiquidLevelSet::keepSolidsDry(const Array3f& sceneSolidNodes) {
   tbb::parallel_for(0, grid_.cells[2], [&](int k) {
     for (int j = 0; j < grid_.cells[1]; ++j)
       for (int i = 0; i < grid_.cells[0]; ++i) {
-        if (!centreInSolid(sceneSolidNodes, i, j, k) ) continue;
+        if (!centreInSolid(sceneSolidNodes, i, j, k)) continue;
         const double solid = interpolateNodes(sceneSolidNodes, grid_, grid_.cellCentre(i, j, k));
         if (solid < 0.0) phi_(i, j, k) = std::max(phi_(i, j, k), static_cast<float>(-solid));
       }
   });
 }
 
-void LiquidLevelSet::advect(const MacVelocity& velocity, const Array3f& sceneSolidNodes, double dt, double bandCells) {
+void LiquidLevelSet::advect(const MacVelocity& velocity, const Array3f& sceneSolidNodes, double dt,
+                            double bandCells) {
   Array3f next = phi_;
   const float band = static_cast<float>(bandCells * grid_.cellSize);
   tbb::parallel_for(0, grid_.cells[2], [&](int k) {
     for (int j = 0; j < grid_.cells[1]; ++j)
       for (int i = 0; i < grid_.cells[0]; ++i) {
-        if (std::abs(phi_(i, j, k)) >= band) continue;  // far from the surface: only its sign counts
+        if (std::abs(phi_(i, j, k)) >= band)
+          continue;  // far from the surface: only its sign counts
         const Vec3 x = grid_.cellCentre(i, j, k);
         const Vec3 u0 = interpolateVelocity(velocity, grid_, x);
         const Vec3 mid{x[0] - 0.5 * dt * u0[0], x[1] - 0.5 * dt * u0[1], x[2] - 0.5 * dt * u0[2]};
@@ -201,16 +216,20 @@ void LiquidLevelSet::matchVolume(double target, const Array3f& sceneSolidNodes) 
     surfaceCells += std::abs(phi) < 0.5 * h;
   }
   if (surfaceCells == 0) return;
-  const double shift = std::clamp((liquidVolumeOutsideSolids(known, sceneSolidNodes, grid_) - target) / (static_cast<double>(surfaceCells) * h * h),
-                                  -kCertainCells * h, kCertainCells * h);
+  const double shift =
+      std::clamp((liquidVolumeOutsideSolids(known, sceneSolidNodes, grid_) - target) /
+                     (static_cast<double>(surfaceCells) * h * h),
+                 -kCertainCells * h, kCertainCells * h);
   for (float& phi : phi_.values()) phi = static_cast<float>(phi + shift);  // NaN stays NaN
   keepSolidsDry(sceneSolidNodes);
 }
 
-Array3f extendLevelAcrossSolids(const Array3f& phi, const Array3f& solidNodes, const Index3& up, double h) {
+Array3f extendLevelAcrossSolids(const Array3f& phi, const Array3f& solidNodes, const Index3& up,
+                                double h) {
   const Index3 n = phi.size();
   const int upAxis = up[0] != 0 ? 0 : up[1] != 0 ? 1 : 2;
-  Array3<std::uint8_t> solid(n, 0), known(n, 0);  // centre inside a solid; φ known (outside or filled)
+  Array3<std::uint8_t> solid(n, 0),
+      known(n, 0);  // centre inside a solid; φ known (outside or filled)
   tbb::parallel_for(0, n[2], [&](int k) {
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {

@@ -29,9 +29,9 @@ inline constexpr double kSolidContactCells = 0.01;
 
 /// How the level set follows its particles.
 struct LevelSetHold {
-  double bandCells = 1.0;  ///< b in still liquid [cells]: the particle surface's bumps stay inside
-  double trustSpeed = 0.1; ///< [m/s]: from this speed on, b = 0 (the particles decide alone)
-  int fullCount = 4;       ///< particles per cell that count as full (half the seeding count)
+  double bandCells = 1.0;   ///< b in still liquid [cells]: the particle surface's bumps stay inside
+  double trustSpeed = 0.1;  ///< [m/s]: from this speed on, b = 0 (the particles decide alone)
+  int fullCount = 4;        ///< particles per cell that count as full (half the seeding count)
 };
 
 class LiquidLevelSet {
@@ -51,8 +51,9 @@ class LiquidLevelSet {
   /// @param velocity     the grid velocity the particles carry [m/s]
   /// @param sceneSolidNodes  the scene solids' distance at the nodes (no domain walls) [m]: a
   ///                         cell whose centre is inside one is air (its depth there)
-  void holdToParticles(const Array3f& particlePhi, const CellIndex& index, const MacVelocity& velocity,
-                       const Array3f& sceneSolidNodes, const LevelSetHold& hold);
+  void holdToParticles(const Array3f& particlePhi, const CellIndex& index,
+                       const MacVelocity& velocity, const Array3f& sceneSolidNodes,
+                       const LevelSetHold& hold);
 
   /// @brief Carries φ with `velocity` for dt [s]: φ(x) ← φ(x − dt·u(x − ½dt·u(x))), in the cells
   ///        within `bandCells` of the surface (|φ| < bandCells·h; the surface moves at most the
@@ -60,7 +61,8 @@ class LiquidLevelSet {
   ///        particles hold). A cell whose departure point lies inside a scene solid
   ///        (`sceneSolidNodes`, no domain walls) takes the particle surface at the next
   ///        holdToParticles: a solid carries no liquid with it.
-  void advect(const MacVelocity& velocity, const Array3f& sceneSolidNodes, double dt, double bandCells);
+  void advect(const MacVelocity& velocity, const Array3f& sceneSolidNodes, double dt,
+              double bandCells);
 
   /// @brief Shifts φ by one constant so that its liquid volume (liquidVolume) is `target` [m³]:
   ///        the band lets a slowly moving surface drift from its particles by up to bandCells, so
@@ -85,7 +87,8 @@ class LiquidLevelSet {
 ///        the 4 × 4 × 4 samples of a cell near the surface or a solid counted only outside the
 ///        solids (`sceneSolidNodes`, no domain walls), so a solid under the surface displaces its
 ///        own volume.
-double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes, const GridGeometry& grid);
+double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNodes,
+                                 const GridGeometry& grid);
 
 /// @brief φ for the pressure solve with the cells whose centre lies inside a solid given the
 ///        mean φ of their neighbours across the horizontal (perpendicular to `up`) faces that are
@@ -98,6 +101,7 @@ double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNo
 /// @param solidNodes  solid signed distance at the nodes [m]
 /// @param up          the grid step against gravity (one axis)
 /// @param h           cell size [m]
-Array3f extendLevelAcrossSolids(const Array3f& phi, const Array3f& solidNodes, const Index3& up, double h);
+Array3f extendLevelAcrossSolids(const Array3f& phi, const Array3f& solidNodes, const Index3& up,
+                                double h);
 
 }  // namespace fluidsound::sim

@@ -84,12 +84,14 @@ TEST(RegionFreeSurface, FacesOnOpenDomainFacesAreNoSurface) {
   domain.open.fill(true);
   const sim::GridGeometry grid = gridOf(domain);
   const sim::Array3f solidNodes = sim::solidNodeDistance(grid, domain, {}, 0.0);
-  const sim::TriangleMesh water = test::boxMesh({0.0f, 0.0f, 0.0f}, {0.16f, static_cast<float>(kLevel), 0.16f});
+  const sim::TriangleMesh water =
+      test::boxMesh({0.0f, 0.0f, 0.0f}, {0.16f, static_cast<float>(kLevel), 0.16f});
   const sim::Array3f phi = regionFreeSurfaceAtCentres(water, solidNodes, grid);
   for (int k = 0; k < 16; ++k)
     for (int j = 6; j <= 8; ++j)
       for (int i = 0; i < 16; ++i)
-        EXPECT_NEAR(phi(i, j, k), grid.cellCentre(i, j, k)[1] - kLevel, 1e-5 * kCell) << i << " " << j << " " << k;
+        EXPECT_NEAR(phi(i, j, k), grid.cellCentre(i, j, k)[1] - kLevel, 1e-5 * kCell)
+            << i << " " << j << " " << k;
 }
 
 // Claim: a region clear of every solid and wall is all free surface: the distance at the

@@ -114,7 +114,8 @@ TEST(LiquidLevelSet, ABoxsFacesOnOpenDomainFacesAreNoSurface) {
   for (int k = 0; k < 16; ++k)
     for (int j = 0; j < 11; ++j)
       for (int i = 0; i < 16; ++i)
-        EXPECT_NEAR(level.phi()(i, j, k), g.cellCentre(i, j, k)[1] - kLevel, 1e-6) << i << " " << j << " " << k;
+        EXPECT_NEAR(level.phi()(i, j, k), g.cellCentre(i, j, k)[1] - kLevel, 1e-6)
+            << i << " " << j << " " << k;
 }
 
 // Claim: in still liquid (zero velocity) the hold moves φ only where it leaves the band of
@@ -135,13 +136,15 @@ TEST(LiquidLevelSet, HoldsWithinTheBandInStillLiquidAndFollowsFastLiquid) {
     for (float& v : particle.values()) v = static_cast<float>(v + offsetCells * kCell);
     MacVelocity still(g);
     level.holdToParticles(particle, onePerCell, still, noSolid, hold);
-    const double moved = std::max(0.0, std::abs(offsetCells) - hold.bandCells) * (offsetCells > 0 ? 1 : -1);
+    const double moved =
+        std::max(0.0, std::abs(offsetCells) - hold.bandCells) * (offsetCells > 0 ? 1 : -1);
     for (std::size_t c = 0; c < before.values().size(); ++c)
       ASSERT_NEAR(level.phi().values()[c], before.values()[c] + moved * kCell, 1e-6) << c;
     MacVelocity fast(g);
     for (float& u : fast[0].values()) u = static_cast<float>(hold.trustSpeed);
     level.holdToParticles(particle, onePerCell, fast, noSolid, hold);
-    for (std::size_t c = 0; c < before.values().size(); ++c) ASSERT_EQ(level.phi().values()[c], particle.values()[c]);
+    for (std::size_t c = 0; c < before.values().size(); ++c)
+      ASSERT_EQ(level.phi().values()[c], particle.values()[c]);
   }
 }
 
@@ -159,7 +162,8 @@ TEST(LiquidLevelSet, FollowsTheParticlesWhereTheyLeaveNoDoubt) {
   full.holdToParticles(air, uniformIndex(g.cells, 8), still, noSolid, LevelSetHold{});
   for (int k = 1; k < 15; ++k)
     for (int j = 1; j < 15; ++j)
-      for (int i = 1; i < 15; ++i) ASSERT_LE(full.phi()(i, j, k), -0.5 * kCell + 1e-7) << i << " " << j << " " << k;
+      for (int i = 1; i < 15; ++i)
+        ASSERT_LE(full.phi()(i, j, k), -0.5 * kCell + 1e-7) << i << " " << j << " " << k;
   LiquidLevelSet empty(scene, g, nodesOf(scene, true));
   const Array3f liquid(g.cells, static_cast<float>(-5 * kCell));
   empty.holdToParticles(liquid, uniformIndex(g.cells, 0), still, noSolid, LevelSetHold{});
@@ -223,9 +227,11 @@ TEST(LiquidLevelSet, ALevelRunsOnThroughASolidAtItsOwnHeight) {
   Array3f flat(g.cells);
   for (int k = 0; k < 16; ++k)
     for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i) flat(i, j, k) = static_cast<float>(g.cellCentre(i, j, k)[1] - kLevel);
+      for (int i = 0; i < 16; ++i)
+        flat(i, j, k) = static_cast<float>(g.cellCentre(i, j, k)[1] - kLevel);
   const Array3f extended = extendLevelAcrossSolids(flat, nodesOf(scene, true), {0, 1, 0}, kCell);
-  for (std::size_t c = 0; c < flat.values().size(); ++c) ASSERT_NEAR(extended.values()[c], flat.values()[c], 1e-6);
+  for (std::size_t c = 0; c < flat.values().size(); ++c)
+    ASSERT_NEAR(extended.values()[c], flat.values()[c], 1e-6);
   // Another height inside the sphere is replaced wherever a horizontal neighbour or the cell above
   // lies outside it: the sphere's outer cells. Its core keeps what it had.
   const auto inSphere = [&](int i, int j, int k) {
@@ -243,8 +249,9 @@ TEST(LiquidLevelSet, ALevelRunsOnThroughASolidAtItsOwnHeight) {
     for (int j = 1; j < 15; ++j)
       for (int i = 1; i < 15; ++i) {
         if (inSphere(i, j, k) >= -0.3 * kCell) continue;
-        const bool outsideNeighbour = inSphere(i - 1, j, k) > 0.3 * kCell || inSphere(i + 1, j, k) > 0.3 * kCell ||
-                                      inSphere(i, j, k - 1) > 0.3 * kCell || inSphere(i, j, k + 1) > 0.3 * kCell;
+        const bool outsideNeighbour =
+            inSphere(i - 1, j, k) > 0.3 * kCell || inSphere(i + 1, j, k) > 0.3 * kCell ||
+            inSphere(i, j, k - 1) > 0.3 * kCell || inSphere(i, j, k + 1) > 0.3 * kCell;
         if (!outsideNeighbour) continue;
         EXPECT_NEAR(healed(i, j, k), flat(i, j, k), 1e-6) << i << " " << j << " " << k;
         ++replaced;
@@ -277,7 +284,8 @@ TEST(LiquidLevelSet, ALevelFillsTheCornerOfTwoWallsOffTheCellPlanes) {
   const Array3f healed = extendLevelAcrossSolids(wrong, nodesOf(scene, true), {0, 1, 0}, kCell);
   for (int k = 0; k < 16; ++k)
     for (int j = 2; j < 14; ++j)
-      for (int i = 0; i < 16; ++i) ASSERT_NEAR(healed(i, j, k), flat(i, j, k), 1e-6) << i << " " << j << " " << k;
+      for (int i = 0; i < 16; ++i)
+        ASSERT_NEAR(healed(i, j, k), flat(i, j, k), 1e-6) << i << " " << j << " " << k;
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ namespace fluidsound::sim {
 namespace {
 
 Scene exampleScene(const std::string& name) {
-  Scene scene = io::readScene(std::string(FLUIDSOUND_SOURCE_DIR) + "/scenes/" + name + ".scene.json");
+  Scene scene =
+      io::readScene(std::string(FLUIDSOUND_SOURCE_DIR) + "/scenes/" + name + ".scene.json");
   io::loadSceneMeshes(scene);
   return scene;
 }

@@ -43,8 +43,10 @@ inline RestMeasure restAfter(sim::Scene scene, double seconds) {
       for (int j = 0; j + 1 < g.cells[1]; ++j) {
         if (!(phi(i, j, k) < 0.0f && phi(i, j + 1, k) >= 0.0f)) continue;
         const double f = phi(i, j, k) / (phi(i, j, k) - phi(i, j + 1, k));
-        const sim::Vec3 at{g.cellCentre(i, j, k)[0], g.cellCentre(i, j, k)[1] + f * g.cellSize, g.cellCentre(i, j, k)[2]};
-        if (sim::interpolateNodes(solids, g, at) > 0.5 * g.cellSize) {  // a free surface, not a contact line
+        const sim::Vec3 at{g.cellCentre(i, j, k)[0], g.cellCentre(i, j, k)[1] + f * g.cellSize,
+                           g.cellCentre(i, j, k)[2]};
+        if (sim::interpolateNodes(solids, g, at) >
+            0.5 * g.cellSize) {  // a free surface, not a contact line
           lowest = std::min(lowest, at[1]);
           highest = std::max(highest, at[1]);
           ++m.columns;
