@@ -11,6 +11,7 @@
 
 #include "sim/cell_interpolation.h"
 #include "sim/liquid_surface.h"
+#include "sim/particle_neighbourhoods.h"
 #include "sim/particle_seeding.h"
 #include "sim/solid_geometry.h"
 
@@ -30,44 +31,6 @@ constexpr int kExtensionPasses = 3;
 /// Whether the cell's centre lies inside a solid (the solver's rule for solid cells).
 bool centreInSolid(const Array3f& solidNodes, int i, int j, int k) {
   return cellCentreSolidDistance(solidNodes, i, j, k) < 0.0f;
-}
-
-/// Per cell, over the 3 × 3 × 3 block around it (cells beyond the grid hold nothing): whether
-/// every cell holds at least `fullCount` particles (bit 1) and whether any particle is there
-/// (bit 2). Separable passes along x, y, z.
-Array3<std::uint8_t> neighbourhoodFlags(const CellIndex& index, const Index3& n,
-                                        std::size_t fullCount) {
-  constexpr std::uint8_t kFull = 1, kAny = 2;
-  Array3<std::uint8_t> flags(n, 0), pass(n, 0);
-  auto& f = flags.values();
-  for (std::size_t c = 0; c < f.size(); ++c) {
-    const std::size_t held = index.start[c + 1] - index.start[c];
-    f[c] = static_cast<std::uint8_t>((held >= fullCount ? kFull : 0) | (held > 0 ? kAny : 0));
-  }
-  for (int a = 0; a < 3; ++a) {
-    tbb::parallel_for(0, n[2], [&](int k) {
-      for (int j = 0; j < n[1]; ++j)
-        for (int i = 0; i < n[0]; ++i) {
-          const int at[3] = {i, j, k};
-          std::uint8_t full = kFull, any = 0;
-          for (int d = -1; d <= 1; ++d) {
-            const int m = at[a] + d;
-            if (m < 0 || m >= n[a]) {
-              full = 0;
-              continue;
-            }
-            const std::uint8_t v = a == 0   ? flags(m, j, k)
-                                   : a == 1 ? flags(i, m, k)
-                                            : flags(i, j, m);
-            full &= v;
-            any |= v & kAny;
-          }
-          pass(i, j, k) = static_cast<std::uint8_t>((full & kFull) | any);
-        }
-    });
-    std::swap(flags, pass);
-  }
-  return flags;
 }
 
 /// Signed distance [m] from x to the free faces of box b: outside it, the distance to the box;
@@ -140,8 +103,9 @@ void LiquidLevelSet::holdToParticles(const Array3f& particlePhi, const CellIndex
                                      const LevelSetHold& hold) {
   const Index3 n = grid_.cells;
   const double h = grid_.cellSize;
+  // Over the 3 × 3 × 3 block around each cell: all full, or any particle at all.
   const Array3<std::uint8_t> flags =
-      neighbourhoodFlags(index, n, static_cast<std::size_t>(hold.fullCount));
+      particleNeighbourhoods(index, n, static_cast<std::size_t>(hold.fullCount), 1);
   tbb::parallel_for(0, n[2], [&](int k) {
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
@@ -152,11 +116,11 @@ void LiquidLevelSet::holdToParticles(const Array3f& particlePhi, const CellIndex
           continue;
         }
         const std::uint8_t around = flags(i, j, k);
-        if (around & 1) {  // every cell around full
+        if (around & kNeighbourhoodFull) {  // every cell around full
           phi = std::min(phi, static_cast<float>(-kCertainCells * h));
           continue;
         }
-        if (!(around & 2)) {  // no particle around
+        if (!(around & kNeighbourhoodAny)) {  // no particle around
           phi = std::max(phi, static_cast<float>(kCertainCells * h));
           continue;
         }

@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "sim/cell_interpolation.h"
+#include "sim/particle_neighbourhoods.h"
 #include "sim/particle_seeding.h"
 
 namespace fluidsound::sim {
@@ -70,27 +71,6 @@ struct NeighbourRows {
   }
 };
 
-/// 1 for each cell whose cube of cells within `radius` (each axis) lies inside the grid and holds
-/// at least `count` particles per cell, else 0: the "full" mask eroded by separable passes.
-Array3<std::uint8_t> fullNeighbourhoods(const CellIndex& index, const Index3& cells, std::size_t count, int radius) {
-  Array3<std::uint8_t> mask(cells, 0), pass(cells, 0);
-  auto& full = mask.values();
-  for (std::size_t c = 0; c < full.size(); ++c) full[c] = index.start[c + 1] - index.start[c] >= count;
-  for (int a = 0; a < 3; ++a) {
-    tbb::parallel_for(0, cells[2], [&](int k) {
-      for (int j = 0; j < cells[1]; ++j)
-        for (int i = 0; i < cells[0]; ++i) {
-          const int at[3] = {i, j, k};
-          std::uint8_t all = at[a] >= radius && at[a] + radius < cells[a];
-          for (int d = -radius; all && d <= radius; ++d)
-            all = a == 0 ? mask(i + d, j, k) : a == 1 ? mask(i, j + d, k) : mask(i, j, k + d);
-          pass(i, j, k) = all;
-        }
-    });
-    std::swap(mask, pass);
-  }
-  return mask;
-}
 }  // namespace
 
 Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex& index,
@@ -101,7 +81,7 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
   const double h = grid.cellSize, radius = kKernelRadiusCells * h, radius2 = radius * radius;
   Array3f phi(grid.cells, static_cast<float>(radius * kFarFactor));
   const Array3<std::uint8_t> interior =
-      interiorCount > 0 ? fullNeighbourhoods(index, grid.cells, interiorCount, kInteriorMarginCells)
+      interiorCount > 0 ? particleNeighbourhoods(index, grid.cells, interiorCount, kInteriorMarginCells)
                         : Array3<std::uint8_t>(grid.cells, 0);
   tbb::parallel_for(0, nk, [&](int k) {
     NeighbourRows n;
@@ -110,7 +90,7 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
       const double *const px = n.x.data(), *const py = n.y.data(), *const pz = n.z.data();
       const double *const yy = n.yy.data(), *const zz = n.zz.data();
       for (int i = 0; i < ni; ++i) {
-        if (interior(i, j, k)) {
+        if (interior(i, j, k) & kNeighbourhoodFull) {
           phi(i, j, k) = static_cast<float>(-particleRadius);
           continue;
         }
