@@ -102,6 +102,8 @@ class BubbleModel {
   /// Totals over all steps so far.
   const SpawnCounts& totalSpawnCounts() const { return totals_; }
   const BubbleSettings& settings() const { return settings_; }
+  /// The distance to the surface at the end of the last step (its bands are the model's).
+  const SurfaceDistance& surfaceDistance() const { return surface_; }
 
  private:
   struct LiveBubble {
