@@ -1,6 +1,9 @@
 // sim/liquid_distance.cpp — see liquid_distance.h.
 #include "sim/liquid_distance.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -11,9 +14,6 @@
 #include <memory>
 #include <stdexcept>
 #include <vector>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "sim/cell_interpolation.h"
 
@@ -35,7 +35,8 @@ constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
 /// it took longer (rebuilds of its saved fields, as BM_SurfaceDistanceRebuild: about 385 µs against
 /// 360 µs), the wake-up of the other thread costing more than it saved.
 constexpr std::size_t kCellsPerTask = std::size_t{1} << 16;
-/// `limit` of a surface cell: below every squared distance, so no propagated point replaces its own.
+/// `limit` of a surface cell: below every squared distance, so no propagated point replaces its
+/// own.
 constexpr double kNeverReplaced = -1.0;
 
 /// A cell's phase for the sign and the surface: air, liquid, or solid (counted as liquid in the
@@ -60,7 +61,9 @@ class SurfaceDistance::NearestFirst {
     double key;  ///< [m²]
     Cell cell;
     Vec3 point;  ///< the surface point the key is the squared distance to [m]
-    bool operator<(const Entry& o) const { return key < o.key || (key == o.key && cell.at < o.cell.at); }
+    bool operator<(const Entry& o) const {
+      return key < o.key || (key == o.key && cell.at < o.cell.at);
+    }
   };
   /// Empties the queue for keys of bucket width `width` [m²] up to `largest` [m²] (larger ones
   /// share the last bucket), keeping its memory: a queue popped empty has every bucket empty.
@@ -81,7 +84,9 @@ class SurfaceDistance::NearestFirst {
     ++size_;
     const std::size_t b = std::min(static_cast<std::size_t>(e.key * scale_), first_.size() - 1);
     if (!run_.empty() && b <= runBucket_) {  // among or before the run's entries: in order
-      run_.insert(std::lower_bound(run_.begin(), run_.end(), e, [](const Entry& in, const Entry& x) { return x < in; }), e);
+      run_.insert(std::lower_bound(run_.begin(), run_.end(), e,
+                                   [](const Entry& in, const Entry& x) { return x < in; }),
+                  e);
       return;
     }
     pool_.push_back({e, first_[b]});
@@ -102,7 +107,8 @@ class SurfaceDistance::NearestFirst {
       first_[cursor_] = kNone;
       if (pool_[head].next == kNone) return pool_[head].entry;
       // Otherwise the bucket becomes the run, largest first.
-      for (std::uint32_t at = head; at != kNone; at = pool_[at].next) run_.push_back(pool_[at].entry);
+      for (std::uint32_t at = head; at != kNone; at = pool_[at].next)
+        run_.push_back(pool_[at].entry);
       runBucket_ = cursor_;
       std::sort(run_.begin(), run_.end(), [](const Entry& a, const Entry& b) { return b < a; });
     }
@@ -118,18 +124,18 @@ class SurfaceDistance::NearestFirst {
     std::uint32_t next;
   };
   double scale_ = 1.0;
-  std::vector<std::uint32_t> first_;  ///< first node of each bucket
-  std::vector<std::uint64_t> filled_; ///< one bit per bucket: set while it holds entries
+  std::vector<std::uint32_t> first_;   ///< first node of each bucket
+  std::vector<std::uint64_t> filled_;  ///< one bit per bucket: set while it holds entries
   std::vector<Node> pool_;
-  std::vector<Entry> run_;            ///< the entries of buckets ≤ runBucket_, largest first
+  std::vector<Entry> run_;  ///< the entries of buckets ≤ runBucket_, largest first
   std::size_t runBucket_ = 0;
   std::size_t cursor_ = 0, size_ = 0;
 };
 
 SurfaceDistance::SurfaceDistance() : front_(std::make_unique<NearestFirst>()) {}
 
-SurfaceDistance::SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
-                                 double band, double airBand)
+SurfaceDistance::SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance,
+                                 const GridGeometry& grid, double band, double airBand)
     : SurfaceDistance() {
   rebuild(phi, solidNodeDistance, grid, band, airBand);
 }
@@ -138,8 +144,8 @@ SurfaceDistance::~SurfaceDistance() = default;
 SurfaceDistance::SurfaceDistance(SurfaceDistance&&) noexcept = default;
 SurfaceDistance& SurfaceDistance::operator=(SurfaceDistance&&) noexcept = default;
 
-void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
-                              double band, double airBand) {
+void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistance,
+                              const GridGeometry& grid, double band, double airBand) {
   if (airBand == 0.0) airBand = band;
   if (!(band > 0.0)) throw std::invalid_argument("SurfaceDistance: band must be > 0 (metres)");
   if (!(airBand > 0.0 && airBand <= band))
@@ -148,11 +154,13 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   const std::size_t sj = static_cast<std::size_t>(ni), sk = static_cast<std::size_t>(ni) * nj;
   const std::size_t n = sk * nk;
   // The work array limit_ is padded by one cell on each side.
-  const std::size_t psj = static_cast<std::size_t>(ni) + 2, psk = psj * (nj + 2), pn = psk * (nk + 2);
+  const std::size_t psj = static_cast<std::size_t>(ni) + 2, psk = psj * (nj + 2),
+                    pn = psk * (nk + 2);
   const auto padded = [&](int i, int j, int k) { return (k + 1) * psk + (j + 1) * psj + (i + 1); };
   if (pn >= std::numeric_limits<std::uint32_t>::max() ||
       std::max({ni, nj, nk}) >= std::numeric_limits<std::int16_t>::max())
-    throw std::invalid_argument("SurfaceDistance: more cells than 32-bit indices (16-bit per axis) address");
+    throw std::invalid_argument(
+        "SurfaceDistance: more cells than 32-bit indices (16-bit per axis) address");
   const bool newLayout = grid_.cells != grid.cells || limit_.size() != pn;
   grid_ = grid;
   band_ = band;
@@ -164,7 +172,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   }
   for (int a = 0; a < 3; ++a) {
     centres_[a].resize(grid.cells[a] + 2);
-    for (int i = -1; i <= grid.cells[a]; ++i) centres_[a][i + 1] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
+    for (int i = -1; i <= grid.cells[a]; ++i)
+      centres_[a][i + 1] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
   }
   // Whole-grid passes in tasks of at least kCellsPerTask cells: a small grid is one task, run by
   // the calling thread without waking another.
@@ -178,22 +187,25 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
       std::memcmp(nodes.data(), solidNodes_.data(), nodes.size() * sizeof(float)) != 0) {
     solidNodes_ = nodes;
     solidCells_.resize(n);
-    tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
-      for (int k = r.begin(); k < r.end(); ++k)
-        for (int j = 0; j < nj; ++j) {
-          const float* const below = &solidNodeDistance(0, j, k);
-          const float* const above = &solidNodeDistance(0, j + 1, k);
-          const float* const behindBelow = &solidNodeDistance(0, j, k + 1);
-          const float* const behindAbove = &solidNodeDistance(0, j + 1, k + 1);
-          std::uint8_t* const out = &solidCells_[k * sk + j * sj];
-          for (int i = 0; i < ni; ++i) {
-            // The 8 nodes in the order (x, then y, then z) of the solver's extendIntoSolids rule.
-            const float sum = below[i] + below[i + 1] + above[i] + above[i + 1] + behindBelow[i] +
-                              behindBelow[i + 1] + behindAbove[i] + behindAbove[i + 1];
-            out[i] = sum < 0.0f;
-          }
-        }
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask),
+                      [&](const tbb::blocked_range<int>& r) {
+                        for (int k = r.begin(); k < r.end(); ++k)
+                          for (int j = 0; j < nj; ++j) {
+                            const float* const below = &solidNodeDistance(0, j, k);
+                            const float* const above = &solidNodeDistance(0, j + 1, k);
+                            const float* const behindBelow = &solidNodeDistance(0, j, k + 1);
+                            const float* const behindAbove = &solidNodeDistance(0, j + 1, k + 1);
+                            std::uint8_t* const out = &solidCells_[k * sk + j * sj];
+                            for (int i = 0; i < ni; ++i) {
+                              // The 8 nodes in the order (x, then y, then z) of the solver's
+                              // extendIntoSolids rule.
+                              const float sum = below[i] + below[i + 1] + above[i] + above[i + 1] +
+                                                behindBelow[i] + behindBelow[i + 1] +
+                                                behindAbove[i] + behindAbove[i + 1];
+                              out[i] = sum < 0.0f;
+                            }
+                          }
+                      });
   }
   // Per row of cells (j, k), which phases it holds (bit 1 << phase): rows of one phase whose
   // neighbour rows hold no other phase have no surface cell, and are passed over below.
@@ -212,12 +224,14 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
       anyLiquid |= liquid;
       anyAir |= (inSolid | liquid) ^ 1u;
     }
-    rowPhases_[row] = static_cast<std::uint8_t>(anyAir << kAir | anyLiquid << kLiquid | anySolid << kSolid);
+    rowPhases_[row] =
+        static_cast<std::uint8_t>(anyAir << kAir | anyLiquid << kLiquid | anySolid << kSolid);
   }
   const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
   // Cells within the band take their first point when it is within their side's band.
   const double band2[2] = {airBand * airBand, band * band};  // by isLiquid
-  const double firstLimit[2] = {std::nextafter(band2[0], kUnknown), std::nextafter(band2[1], kUnknown)};
+  const double firstLimit[2] = {std::nextafter(band2[0], kUnknown),
+                                std::nextafter(band2[1], kUnknown)};
   // 1. Cells next to the surface: the foot of the perpendicular on the plane through the nearest
   //    crossing on each axis (intercepts θ_a·h, directions s_a): normal ∝ (s_a/(θ_a h)), distance
   //    d = 1/√(Σ 1/(θ_a h)²), foot = centre + d²·(s_a/(θ_a h)). Each z-plane lists its own, so the
@@ -226,85 +240,93 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   surfaceOfPlane.resize(nk);
   for (std::vector<SurfaceCell>& plane : surfaceOfPlane) plane.clear();
   solidRow_.assign(ni, kSolid);  // the neighbours of a row at the grid's edge
-  tbb::parallel_for(tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
-    std::vector<std::uint8_t> crossing(ni);
-    for (int k = r.begin(); k < r.end(); ++k)
-      for (int j = 0; j < nj; ++j) {
-        const std::size_t rowAt = k * sk + j * sj;
-        const std::uint8_t* const row = &phase_[rowAt];
-        const std::uint8_t* const down = j > 0 ? row - sj : solidRow_.data();
-        const std::uint8_t* const up = j + 1 < nj ? row + sj : solidRow_.data();
-        const std::uint8_t* const back = k > 0 ? row - sk : solidRow_.data();
-        const std::uint8_t* const ahead = k + 1 < nk ? row + sk : solidRow_.data();
-        double* const limit = &limit_[padded(0, j, k)];
-        const std::size_t rowIndex = static_cast<std::size_t>(k) * nj + j;
-        const std::uint8_t held = rowPhases_[rowIndex];
-        if (held == 1u << kAir || held == 1u << kLiquid) std::fill(limit, limit + ni, firstLimit[held != 1u << kAir]);
-        else
-          for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
-        // A surface cell needs air and liquid in its row or the four rows beside it.
-        std::uint8_t nearby = held;
-        if (j > 0) nearby |= rowPhases_[rowIndex - 1];
-        if (j + 1 < nj) nearby |= rowPhases_[rowIndex + 1];
-        if (k > 0) nearby |= rowPhases_[rowIndex - nj];
-        if (k + 1 < nk) nearby |= rowPhases_[rowIndex + nj];
-        constexpr std::uint8_t kAirAndLiquid = (1u << kAir) | (1u << kLiquid);
-        if ((nearby & kAirAndLiquid) != kAirAndLiquid) continue;
-        // Most cells are not next to the surface: first a test without branches on the six
-        // neighbours (a neighbour outside the grid reads as solid, which makes no crossing; a
-        // solid cell makes none either).
-        for (int i = 0; i < ni; ++i) {
-          const std::uint8_t other = row[i] == kAir ? kLiquid : kAir;
-          const std::uint8_t left = i > 0 ? row[i - 1] : std::uint8_t{kSolid};
-          const std::uint8_t right = i + 1 < ni ? row[i + 1] : std::uint8_t{kSolid};
-          crossing[i] = (row[i] != kSolid) & ((left == other) | (right == other) | (down[i] == other) |
-                                              (up[i] == other) | (back[i] == other) | (ahead[i] == other));
-        }
-        for (int i = 0; i < ni; ++i) {
-          if (!crossing[i]) continue;
-          const std::size_t at = rowAt + i;
-          const int index[3] = {i, j, k}, count[3] = {ni, nj, nk};
-          const std::size_t stride[3] = {1, sj, sk};
-          // A crossing on an axis: a neighbour of the other phase that is not solid.
-          const auto crossesTo = [&](int a, int step) {
-            if (index[a] + step < 0 || index[a] + step >= count[a]) return false;
-            const std::size_t other = step < 0 ? at - stride[a] : at + stride[a];
-            return phase_[other] != kSolid && isLiquid(other) != isLiquid(at);
-          };
-          const double here = phi.data()[at];
-          double inverse[3] = {0.0, 0.0, 0.0};  // s_a/(θ_a h) [1/m]
-          bool onSurface = false;
-          for (int a = 0; a < 3; ++a) {
-            double nearest = kUnknown;
-            int side = 0;
-            for (const int step : {-1, 1}) {
-              if (!crossesTo(a, step)) continue;
-              const double there = phi.data()[step < 0 ? at - stride[a] : at + stride[a]];
-              const double along = h * here / (here - there);  // here and there differ in sign
-              if (along < nearest) nearest = along, side = step;
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
+        std::vector<std::uint8_t> crossing(ni);
+        for (int k = r.begin(); k < r.end(); ++k)
+          for (int j = 0; j < nj; ++j) {
+            const std::size_t rowAt = k * sk + j * sj;
+            const std::uint8_t* const row = &phase_[rowAt];
+            const std::uint8_t* const down = j > 0 ? row - sj : solidRow_.data();
+            const std::uint8_t* const up = j + 1 < nj ? row + sj : solidRow_.data();
+            const std::uint8_t* const back = k > 0 ? row - sk : solidRow_.data();
+            const std::uint8_t* const ahead = k + 1 < nk ? row + sk : solidRow_.data();
+            double* const limit = &limit_[padded(0, j, k)];
+            const std::size_t rowIndex = static_cast<std::size_t>(k) * nj + j;
+            const std::uint8_t held = rowPhases_[rowIndex];
+            if (held == 1u << kAir || held == 1u << kLiquid)
+              std::fill(limit, limit + ni, firstLimit[held != 1u << kAir]);
+            else
+              for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
+            // A surface cell needs air and liquid in its row or the four rows beside it.
+            std::uint8_t nearby = held;
+            if (j > 0) nearby |= rowPhases_[rowIndex - 1];
+            if (j + 1 < nj) nearby |= rowPhases_[rowIndex + 1];
+            if (k > 0) nearby |= rowPhases_[rowIndex - nj];
+            if (k + 1 < nk) nearby |= rowPhases_[rowIndex + nj];
+            constexpr std::uint8_t kAirAndLiquid = (1u << kAir) | (1u << kLiquid);
+            if ((nearby & kAirAndLiquid) != kAirAndLiquid) continue;
+            // Most cells are not next to the surface: first a test without branches on the six
+            // neighbours (a neighbour outside the grid reads as solid, which makes no crossing; a
+            // solid cell makes none either).
+            for (int i = 0; i < ni; ++i) {
+              const std::uint8_t other = row[i] == kAir ? kLiquid : kAir;
+              const std::uint8_t left = i > 0 ? row[i - 1] : std::uint8_t{kSolid};
+              const std::uint8_t right = i + 1 < ni ? row[i + 1] : std::uint8_t{kSolid};
+              crossing[i] = (row[i] != kSolid) &
+                            ((left == other) | (right == other) | (down[i] == other) |
+                             (up[i] == other) | (back[i] == other) | (ahead[i] == other));
             }
-            if (nearest == kUnknown) continue;
-            if (nearest <= 0.0) onSurface = true;
-            else inverse[a] = side / nearest;
+            for (int i = 0; i < ni; ++i) {
+              if (!crossing[i]) continue;
+              const std::size_t at = rowAt + i;
+              const int index[3] = {i, j, k}, count[3] = {ni, nj, nk};
+              const std::size_t stride[3] = {1, sj, sk};
+              // A crossing on an axis: a neighbour of the other phase that is not solid.
+              const auto crossesTo = [&](int a, int step) {
+                if (index[a] + step < 0 || index[a] + step >= count[a]) return false;
+                const std::size_t other = step < 0 ? at - stride[a] : at + stride[a];
+                return phase_[other] != kSolid && isLiquid(other) != isLiquid(at);
+              };
+              const double here = phi.data()[at];
+              double inverse[3] = {0.0, 0.0, 0.0};  // s_a/(θ_a h) [1/m]
+              bool onSurface = false;
+              for (int a = 0; a < 3; ++a) {
+                double nearest = kUnknown;
+                int side = 0;
+                for (const int step : {-1, 1}) {
+                  if (!crossesTo(a, step)) continue;
+                  const double there = phi.data()[step < 0 ? at - stride[a] : at + stride[a]];
+                  const double along = h * here / (here - there);  // here and there differ in sign
+                  if (along < nearest) nearest = along, side = step;
+                }
+                if (nearest == kUnknown) continue;
+                if (nearest <= 0.0)
+                  onSurface = true;
+                else
+                  inverse[a] = side / nearest;
+              }
+              const Vec3 c{centres_[0][i + 1], centres_[1][j + 1], centres_[2][k + 1]};
+              const Cell cell{static_cast<std::uint32_t>(padded(i, j, k)),
+                              static_cast<std::uint32_t>(at), static_cast<std::int16_t>(i),
+                              static_cast<std::int16_t>(j), static_cast<std::int16_t>(k)};
+              limit_[cell.at] = kNeverReplaced;
+              if (onSurface) {
+                surfaceOfPlane[k].push_back({cell, 0.0, c});
+                continue;
+              }
+              const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] +
+                                       inverse[2] * inverse[2]);
+              Vec3 foot;
+              for (int a = 0; a < 3; ++a) foot[a] = c[a] + d2 * inverse[a];
+              surfaceOfPlane[k].push_back({cell, std::sqrt(d2), foot});
+            }
           }
-          const Vec3 c{centres_[0][i + 1], centres_[1][j + 1], centres_[2][k + 1]};
-          const Cell cell{static_cast<std::uint32_t>(padded(i, j, k)), static_cast<std::uint32_t>(at),
-                          static_cast<std::int16_t>(i), static_cast<std::int16_t>(j), static_cast<std::int16_t>(k)};
-          limit_[cell.at] = kNeverReplaced;
-          if (onSurface) {
-            surfaceOfPlane[k].push_back({cell, 0.0, c});
-            continue;
-          }
-          const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] + inverse[2] * inverse[2]);
-          Vec3 foot;
-          for (int a = 0; a < 3; ++a) foot[a] = c[a] + d2 * inverse[a];
-          surfaceOfPlane[k].push_back({cell, std::sqrt(d2), foot});
-        }
-      }
-  });
+      });
   std::vector<SurfaceCell>& surface = surface_;
   surface.clear();
-  for (const std::vector<SurfaceCell>& plane : surfaceOfPlane) surface.insert(surface.end(), plane.begin(), plane.end());
+  for (const std::vector<SurfaceCell>& plane : surfaceOfPlane)
+    surface.insert(surface.end(), plane.begin(), plane.end());
   // 2. Every other cell within the band: the nearest surface point among those its 26 neighbours
   //    hold, settled in order of distance (Dijkstra's order; closest-point propagation, so the
   //    distance is Euclidean to the point found and no upwind error accumulates with depth).
@@ -318,7 +340,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
     // An entry that is not stale is the cell's latest (keys only decrease), so its point is the
     // cell's closest point.
     const auto [key, cell, p] = front.pop();
-    if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at]) continue;  // reached closer since
+    if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at])
+      continue;  // reached closer since
     // Squared distance from p to the 26 neighbours' centres: per axis first, summed in the order
     // x, y, z of the formula (x² + y²) + z², so each is rounded as written out in full. The
     // padding's limit is below every distance: neighbours beyond the grid are never taken.
@@ -342,16 +365,21 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         for (int dx = 0; dx < 3; ++dx) {
           const int n = (dz * 3 + dy) * 3 + dx;
           e2[n] = (axis[0][dx] + yz) + axis[2][dz];
-          improves |= static_cast<std::uint32_t>(e2[n] < limit[dx]) << n;  // never the cell itself: e2 = limit
+          improves |= static_cast<std::uint32_t>(e2[n] < limit[dx])
+                      << n;  // never the cell itself: e2 = limit
         }
       }
     for (; improves != 0; improves &= improves - 1) {
       const int n = std::countr_zero(improves);
       const int dx = n % 3 - 1, dy = n / 3 % 3 - 1, dz = n / 9 - 1;
-      const std::ptrdiff_t offset = dz * static_cast<std::ptrdiff_t>(psk) + dy * static_cast<std::ptrdiff_t>(psj) + dx;
-      const std::ptrdiff_t gridOffset = dz * static_cast<std::ptrdiff_t>(sk) + dy * static_cast<std::ptrdiff_t>(sj) + dx;
-      const Cell reached{static_cast<std::uint32_t>(cell.at + offset), static_cast<std::uint32_t>(cell.grid + gridOffset),
-                         static_cast<std::int16_t>(cell.i + dx), static_cast<std::int16_t>(cell.j + dy),
+      const std::ptrdiff_t offset =
+          dz * static_cast<std::ptrdiff_t>(psk) + dy * static_cast<std::ptrdiff_t>(psj) + dx;
+      const std::ptrdiff_t gridOffset =
+          dz * static_cast<std::ptrdiff_t>(sk) + dy * static_cast<std::ptrdiff_t>(sj) + dx;
+      const Cell reached{static_cast<std::uint32_t>(cell.at + offset),
+                         static_cast<std::uint32_t>(cell.grid + gridOffset),
+                         static_cast<std::int16_t>(cell.i + dx),
+                         static_cast<std::int16_t>(cell.j + dy),
                          static_cast<std::int16_t>(cell.k + dz)};
       limit_[reached.at] = e2[n];
       touched_.push_back(reached);
@@ -364,15 +392,18 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
   float* const out = field_.data();
   const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by isLiquid
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kCellsPerTask), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t at = r.begin(); at < r.end(); ++at) out[at] = beyond[phase_[at] != kAir];
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kCellsPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t at = r.begin(); at < r.end(); ++at)
+                        out[at] = beyond[phase_[at] != kAir];
+                    });
   for (const Cell& c : touched_) {
     const std::size_t at = c.grid;
     const double side = isLiquid(at) ? band : airBand;
     const double squared = limit_[c.at];
     const double magnitude = squared <= band2[isLiquid(at)] ? std::sqrt(squared) : side;
-    out[at] = static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
+    out[at] =
+        static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
   }
   for (const SurfaceCell& s : surface) {  // surface cells: the distance to their own point
     const double magnitude = std::min(s.distance, isLiquid(s.cell.grid) ? band : airBand);
@@ -381,7 +412,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   // 4. The surface points, grouped by bucket (in cell order within a bucket) for at().
   for (int a = 0; a < 3; ++a) buckets_[a] = (grid.cells[a] + kBucketCells - 1) / kBucketCells;
   const auto bucketOf = [&](const Cell& c) {
-    return (static_cast<std::size_t>(c.k / kBucketCells) * buckets_[1] + c.j / kBucketCells) * buckets_[0] +
+    return (static_cast<std::size_t>(c.k / kBucketCells) * buckets_[1] + c.j / kBucketCells) *
+               buckets_[0] +
            c.i / kBucketCells;
   };
   bucketStart_.assign(static_cast<std::size_t>(buckets_[0]) * buckets_[1] * buckets_[2] + 1, 0);
@@ -412,8 +444,11 @@ double SurfaceDistance::nearestSurfacePoint(const Vec3& p) const {
         if (by < 0 || by >= buckets_[1]) continue;
         for (int bx = home[0] - r; bx <= home[0] + r; ++bx) {
           if (bx < 0 || bx >= buckets_[0]) continue;
-          if (std::max({std::abs(bx - home[0]), std::abs(by - home[1]), std::abs(bz - home[2])}) != r) continue;
-          const std::size_t b = (static_cast<std::size_t>(bz) * buckets_[1] + by) * buckets_[0] + bx;
+          if (std::max({std::abs(bx - home[0]), std::abs(by - home[1]), std::abs(bz - home[2])}) !=
+              r)
+            continue;
+          const std::size_t b =
+              (static_cast<std::size_t>(bz) * buckets_[1] + by) * buckets_[0] + bx;
           for (std::size_t q = bucketStart_[b]; q < bucketStart_[b + 1]; ++q) {
             const Vec3& s = points_[q];
             best2 = std::min(best2, (s[0] - p[0]) * (s[0] - p[0]) + (s[1] - p[1]) * (s[1] - p[1]) +
@@ -428,7 +463,8 @@ double SurfaceDistance::nearestSurfacePoint(const Vec3& p) const {
 
 double SurfaceDistance::at(const Vec3& position) const {
   const double value = interpolateCellCentres(field_, grid_, position);
-  if (std::abs(value) < (value < 0.0 ? band_ : airBand_) - kFieldMarginCells * grid_.cellSize) return value;
+  if (std::abs(value) < (value < 0.0 ? band_ : airBand_) - kFieldMarginCells * grid_.cellSize)
+    return value;
   const double h = grid_.cellSize;
   const double far = h * std::sqrt(static_cast<double>(grid_.cells[0]) * grid_.cells[0] +
                                    static_cast<double>(grid_.cells[1]) * grid_.cells[1] +
