@@ -5,7 +5,7 @@
 // the bubble model attached as `fluidsound simulate` runs it, reporting the fluid stage's seconds
 // (the solver's substeps and once-per-frame particle maintenance), the bubble model's seconds and
 // its share of the fluid stage (issue 6: bubble model and transfer together under 10 %; the
-// transfer stage is timed by tools/bench.sh through `fluidsound run`).
+// transfer stage is timed by `fluidsound run`, in its report.json's run.stages.transfer).
 //   build/tests/fluidsound_bench --benchmark_filter=BubbleShare
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
