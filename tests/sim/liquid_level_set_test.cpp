@@ -37,6 +37,14 @@ Array3f nodesOf(const Scene& s, bool walls) {
   return solidNodeDistance(s.grid(), d, s.solids, 0.0);
 }
 
+/// Calls f(i, j, k, centre) for every cell of the grid, in index order.
+template <class F>
+void forEachCell(const GridGeometry& g, F f) {
+  for (int k = 0; k < g.cells[2]; ++k)
+    for (int j = 0; j < g.cells[1]; ++j)
+      for (int i = 0; i < g.cells[0]; ++i) f(i, j, k, g.cellCentre(i, j, k));
+}
+
 /// A cell index with `count` particles in every cell (the positions do not matter to the hold).
 CellIndex uniformIndex(const Index3& n, std::size_t count) {
   CellIndex index;
@@ -54,18 +62,15 @@ TEST(LiquidLevelSet, StartsAtTheRegionsFreeSurfaceAndAirInSolids) {
   const GridGeometry g = scene.grid();
   const LiquidLevelSet level(scene, g, nodesOf(scene, true));
   int inSphere = 0;
-  for (int k = 0; k < 16; ++k)
-    for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i) {
-        const Vec3 x = g.cellCentre(i, j, k);
-        const double sphere = std::hypot(x[0] - 0.08, x[1] - 0.04, x[2] - 0.08) - 0.025;
-        if (sphere < -0.25 * kCell) {
-          EXPECT_GT(level.phi()(i, j, k), 0.0f) << i << " " << j << " " << k;
-          ++inSphere;
-        } else if (sphere > 0.25 * kCell && x[1] - kLevel < 8 * kCell) {
-          EXPECT_NEAR(level.phi()(i, j, k), x[1] - kLevel, 1e-6) << i << " " << j << " " << k;
-        }
-      }
+  forEachCell(g, [&](int i, int j, int k, const Vec3& x) {
+    const double sphere = std::hypot(x[0] - 0.08, x[1] - 0.04, x[2] - 0.08) - 0.025;
+    if (sphere < -0.25 * kCell) {
+      EXPECT_GT(level.phi()(i, j, k), 0.0f) << i << " " << j << " " << k;
+      ++inSphere;
+    } else if (sphere > 0.25 * kCell && x[1] - kLevel < 8 * kCell) {
+      EXPECT_NEAR(level.phi()(i, j, k), x[1] - kLevel, 1e-6) << i << " " << j << " " << k;
+    }
+  });
   EXPECT_GT(inSphere, 20);
 }
 
@@ -87,14 +92,11 @@ TEST(LiquidLevelSet, ARegionsFacesAgainstASolidAreNoSurface) {
   const GridGeometry g = scene.grid();
   const LiquidLevelSet level(scene, g, nodesOf(scene, true));
   int checked = 0;
-  for (int k = 0; k < 16; ++k)
-    for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i) {
-        const Vec3 x = g.cellCentre(i, j, k);
-        if (x[0] < wallX || x[2] > wallZ || x[1] - kLevel > 3 * kCell) continue;
-        EXPECT_NEAR(level.phi()(i, j, k), x[1] - kLevel, 1e-6) << i << " " << j << " " << k;
-        ++checked;
-      }
+  forEachCell(g, [&](int i, int j, int k, const Vec3& x) {
+    if (x[0] < wallX || x[2] > wallZ || x[1] - kLevel > 3 * kCell) return;
+    EXPECT_NEAR(level.phi()(i, j, k), x[1] - kLevel, 1e-6) << i << " " << j << " " << k;
+    ++checked;
+  });
   EXPECT_EQ(checked, 13 * 12 * 10);  // columns i = 3 … 15, k = 0 … 11; rows j = 0 … 9
   scene.solids.clear();
   const LiquidLevelSet free(scene, g, nodesOf(scene, true));
@@ -225,10 +227,9 @@ TEST(LiquidLevelSet, ALevelRunsOnThroughASolidAtItsOwnHeight) {
   const Scene scene = tank(true);
   const GridGeometry g = scene.grid();
   Array3f flat(g.cells);
-  for (int k = 0; k < 16; ++k)
-    for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i)
-        flat(i, j, k) = static_cast<float>(g.cellCentre(i, j, k)[1] - kLevel);
+  forEachCell(g, [&](int i, int j, int k, const Vec3& x) {
+    flat(i, j, k) = static_cast<float>(x[1] - kLevel);
+  });
   const Array3f extended = extendLevelAcrossSolids(flat, nodesOf(scene, true), {0, 1, 0}, kCell);
   for (std::size_t c = 0; c < flat.values().size(); ++c)
     ASSERT_NEAR(extended.values()[c], flat.values()[c], 1e-6);
@@ -239,10 +240,9 @@ TEST(LiquidLevelSet, ALevelRunsOnThroughASolidAtItsOwnHeight) {
     return std::hypot(x[0] - 0.08, x[1] - 0.04, x[2] - 0.08) - 0.025;
   };
   Array3f wrong = flat;
-  for (int k = 0; k < 16; ++k)
-    for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i)
-        if (inSphere(i, j, k) < -0.3 * kCell) wrong(i, j, k) = 1.0f;
+  forEachCell(g, [&](int i, int j, int k, const Vec3&) {
+    if (inSphere(i, j, k) < -0.3 * kCell) wrong(i, j, k) = 1.0f;
+  });
   const Array3f healed = extendLevelAcrossSolids(wrong, nodesOf(scene, true), {0, 1, 0}, kCell);
   int replaced = 0;
   for (int k = 1; k < 15; ++k)
@@ -275,12 +275,10 @@ TEST(LiquidLevelSet, ALevelFillsTheCornerOfTwoWallsOffTheCellPlanes) {
   scene.solids = {wallX, wallZ};
   const GridGeometry g = scene.grid();
   Array3f flat(g.cells), wrong(g.cells);
-  for (int k = 0; k < 16; ++k)
-    for (int j = 0; j < 16; ++j)
-      for (int i = 0; i < 16; ++i) {
-        flat(i, j, k) = static_cast<float>(g.cellCentre(i, j, k)[1] - kLevel);
-        wrong(i, j, k) = (i == 0 || k == 15) ? 1.0f : flat(i, j, k);  // the wall cells read air
-      }
+  forEachCell(g, [&](int i, int j, int k, const Vec3& x) {
+    flat(i, j, k) = static_cast<float>(x[1] - kLevel);
+    wrong(i, j, k) = (i == 0 || k == 15) ? 1.0f : flat(i, j, k);  // the wall cells read air
+  });
   const Array3f healed = extendLevelAcrossSolids(wrong, nodesOf(scene, true), {0, 1, 0}, kCell);
   for (int k = 0; k < 16; ++k)
     for (int j = 2; j < 14; ++j)
