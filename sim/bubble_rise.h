@@ -34,8 +34,12 @@ enum class BubbleSurface {
   Contaminated,
   SlightlyContaminated,  ///< Not checked against measurements here.
   /// Hyper-clean water: Levich's speed for r ≈ 0.3–0.55 mm, a peak of 0.36 m/s at r ≈ 0.6 mm, then
-  /// Mendelson's. Duineveld (1995, JFM 292:325) measured the peak, ≈ 0.35 m/s, near r ≈ 0.9 mm
-  /// [memory], so this law is ≈ 15 % slow around r = 1 mm: not validated.
+  /// Mendelson's. Not validated: against Duineveld's measurements in pure water (1995, JFM
+  /// 292:325, Fig. 1, as digitised in github.com/CRC-1194/lent, cases/flow-solution/rising-bubble/
+  /// three-dimensional/notebooks/BubbleRiseVelocity-Duineveld.csv: r = 0.33, 0.5, 0.6, 0.905,
+  /// 0.97 mm → 0.137, 0.261, 0.308, 0.363, 0.354 m/s) it gives 0.118, 0.271, 0.357, 0.300,
+  /// 0.291 m/s: within 10 % only near r = 0.4–0.5 and 0.7–0.75 mm, 16 % fast at 0.6 mm and
+  /// 17–18 % slow at 0.9–1 mm, where the measured peak lies.
   Pure,
 };
 
