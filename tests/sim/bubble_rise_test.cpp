@@ -22,8 +22,10 @@ const Vec3 kDown{0.0, -kGravity, 0.0};
 /// Source: Clift, Grace & Weber (1978), Bubbles, Drops, and Particles, Fig. 7.3, the
 /// "contaminated water" curve (its tap-water data include, as recalled, Haberman & Morton 1953,
 /// DTMB Report 802). Tag [memory]: the values were read from a recalled figure, not from the book
-/// or the report; a search of the public corpora found neither table nor digitised curve, so
-/// they carry the reading uncertainty of a log-log figure, ≈ ±5–10 %. Verify against the book.
+/// or the report; searches of the public corpora found no table or digitised curve for tap water
+/// (the one digitised set found, Duineveld 1995's pure water for r = 0.33–0.97 mm, covers neither
+/// this water nor 2–4 mm: bubble_rise.h, BubbleSurface::Pure), so the values carry the reading
+/// uncertainty of a log-log figure, ≈ ±5–10 %. Verify against the book.
 struct Measurement {
   double radius;         ///< r [m], volume-equivalent
   double terminalSpeed;  ///< U_T [m/s]
