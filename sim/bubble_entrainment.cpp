@@ -37,7 +37,8 @@ constexpr std::size_t kFilterBitsPerTag = 16;
 constexpr std::uint64_t kDenseIdsPerTag = 64;
 constexpr std::uint64_t kDenseIdsAlways = std::uint64_t{1} << 20;
 /// Below this |∇φ| [-] (φ is a distance, |∇φ| ≈ 1 near the surface) the normal is undefined: the
-/// particle sits where φ is flat (e.g. the solver's constant far value), and the speed test is skipped.
+/// particle sits where φ is flat (e.g. the solver's constant far value), and the speed test is
+/// skipped.
 constexpr double kMinimumDistanceGradient = 0.1;
 
 /// Particles ahead whose record is fetched into the cache while this one is tested: the records
@@ -70,7 +71,9 @@ std::vector<std::uint8_t> beyondBandStencils(const Array3f& phi, double band) {
     side[at] = phi.data()[at] > beyond ? 1 : (phi.data()[at] < -beyond ? 2 : 0);
   // Along x, then y, then z: a cell keeps its side if the next cell along the axis (when there is
   // one) has the same; after three passes, if all 8 corners of its stencil have.
-  const auto keepIfSame = [&](std::size_t at, std::size_t next) { side[at] = side[next] == side[at] ? side[at] : 0; };
+  const auto keepIfSame = [&](std::size_t at, std::size_t next) {
+    side[at] = side[next] == side[at] ? side[at] : 0;
+  };
   for (int k = 0; k < nk; ++k)
     for (int j = 0; j < nj; ++j)
       for (int i = 0; i + 1 < ni; ++i) keepIfSame(k * sk + j * sj + i, k * sk + j * sj + i + 1);
@@ -103,7 +106,8 @@ struct BlockResult {
 
 /// The speed at which particle velocity v moves into the liquid relative to the liquid
 /// probe·h beneath x along the inward normal [m/s]; −∞ where the normal is undefined.
-double relativeSpeedIntoLiquid(const LiquidState& liquid, const Vec3& x, const Vec3& v, double probeDistance) {
+double relativeSpeedIntoLiquid(const LiquidState& liquid, const Vec3& x, const Vec3& v,
+                               double probeDistance) {
   const FieldSample phi = sampleCellCentres(liquid.liquidDistance, liquid.grid, x);
   const Vec3& g = phi.gradient;
   const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
@@ -119,11 +123,13 @@ double relativeSpeedIntoLiquid(const LiquidState& liquid, const Vec3& x, const V
 
 }  // namespace
 
-EntrainmentTagTable::EntrainmentTagTable(std::vector<EntrainmentTag> tags) : tags_(std::move(tags)) {
+EntrainmentTagTable::EntrainmentTagTable(std::vector<EntrainmentTag> tags)
+    : tags_(std::move(tags)) {
   if (tags_.empty()) return;
   const auto duplicate = [](std::uint64_t id) {
     std::ostringstream message;
-    message << "LiquidState.particleIds must be unique, but id " << id << " belongs to two particles";
+    message << "LiquidState.particleIds must be unique, but id " << id
+            << " belongs to two particles";
     throw std::invalid_argument(message.str());
   };
   std::uint64_t largest = 0;
@@ -147,11 +153,13 @@ EntrainmentTagTable::EntrainmentTagTable(std::vector<EntrainmentTag> tags) : tag
     tags_ = std::move(sorted);
     return;
   }
-  std::sort(tags_.begin(), tags_.end(),
-            [](const EntrainmentTag& a, const EntrainmentTag& b) { return a.particleId < b.particleId; });
+  std::sort(tags_.begin(), tags_.end(), [](const EntrainmentTag& a, const EntrainmentTag& b) {
+    return a.particleId < b.particleId;
+  });
   for (std::size_t i = 1; i < tags_.size(); ++i)
     if (tags_[i].particleId == tags_[i - 1].particleId) duplicate(tags_[i].particleId);
-  const std::uint64_t bits = std::bit_ceil(std::max<std::uint64_t>(64, kFilterBitsPerTag * tags_.size()));
+  const std::uint64_t bits =
+      std::bit_ceil(std::max<std::uint64_t>(64, kFilterBitsPerTag * tags_.size()));
   mask_ = bits - 1;
   filter_.assign(bits / 64, 0);
   for (const EntrainmentTag& t : tags_) {
@@ -168,13 +176,15 @@ const EntrainmentTag* EntrainmentTagTable::find(std::uint64_t id) const {
   if (tags_.empty()) return nullptr;
   const std::uint64_t slot = filterSlot(id) & mask_;
   if (!((filter_[slot >> 6] >> (slot & 63)) & 1)) return nullptr;
-  const auto it = std::lower_bound(tags_.begin(), tags_.end(), id,
-                                   [](const EntrainmentTag& t, std::uint64_t key) { return t.particleId < key; });
+  const auto it = std::lower_bound(
+      tags_.begin(), tags_.end(), id,
+      [](const EntrainmentTag& t, std::uint64_t key) { return t.particleId < key; });
   return it != tags_.end() && it->particleId == id ? &*it : nullptr;
 }
 
 bool entrainmentUsesVelocityRange(const BubbleSettings& settings) {
-  return std::isfinite(settings.entrainmentSpeed) && settings.probeCells <= VelocityRange::reachCells();
+  return std::isfinite(settings.entrainmentSpeed) &&
+         settings.probeCells <= VelocityRange::reachCells();
 }
 
 EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
@@ -188,7 +198,8 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
 }
 
 EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
-                                  const BubbleSettings& settings, double time, const VelocityRange* range) {
+                                  const BubbleSettings& settings, double time,
+                                  const VelocityRange* range) {
   validateLiquidState(liquid);
   const double h = liquid.grid.cellSize;
   const double band = settings.bandCells * h;
@@ -243,7 +254,8 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
       if (seedAlive)
         out.seeds.push_back({tag.particleId, x, tag.seedBirth,
                              std::exp(-(time - tag.seedBirth) / settings.potentialDecayTime)});
-      if (seedAlive || time - tag.windowStart <= settings.entrainmentWindow) out.tags.push_back(tag);
+      if (seedAlive || time - tag.windowStart <= settings.entrainmentWindow)
+        out.tags.push_back(tag);
     }
   });
   // Merge in block order; the sorts by id make the result independent of the particles' order.
