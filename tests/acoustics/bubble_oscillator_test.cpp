@@ -72,14 +72,16 @@ TEST(BubbleOscillator, DefaultModelCombinesTablesT1T2aAndT7) {
   const OscillatorModel model;
   for (const DefaultRow& row : kDefaultRows) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
-    const OscillatorConstants constants = bubbleOscillator(row.radius, liquid.ambientPressure, liquid, model);
+    const OscillatorConstants constants =
+        bubbleOscillator(row.radius, liquid.ambientPressure, liquid, model);
     // Claim: ω₀ from the adiabatic + σ model, δ and β = ω₀δ/2 from Devin damping, amplitude from
     // the jet forcing (the defaults of oscillator_model.h). References: T1 "σ, κ=γ", T2a δ_total
     // and β, T7 "jet: p(1 m)". Tolerance: printed precision or 2e-5 relative; 0.1 % for the jet.
     EXPECT_NEAR(constants.angularFrequency / (2.0 * std::numbers::pi), row.frequency,
                 printedTolerance(row.frequency, kFrequencyDigit));
     EXPECT_NEAR(constants.dampingConstant, row.total, printedTolerance(row.total, kDeltaDigit));
-    EXPECT_NEAR(constants.decayRate, row.decayRate, printedTolerance(row.decayRate, row.decayDigit));
+    EXPECT_NEAR(constants.decayRate, row.decayRate,
+                printedTolerance(row.decayRate, row.decayDigit));
     EXPECT_NEAR(constants.amplitude, row.jetPressure, kJetRelativeTolerance * row.jetPressure);
   }
 }
@@ -90,14 +92,16 @@ TEST(BubbleOscillator, ThermalModelMatchesTablesT1AndT2bPhiColumns) {
   model.polytropic = PolytropicModel::Thermal;
   for (const ThermalRow& row : kThermalRows) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
-    const OscillatorConstants constants = bubbleOscillator(row.radius, liquid.ambientPressure, liquid, model);
+    const OscillatorConstants constants =
+        bubbleOscillator(row.radius, liquid.ambientPressure, liquid, model);
     // Claim: with κ_eff the frequency is T1's "σ, κ_eff" and the damping uses p_g0|Im Φ|/(ρR²ω₀²)
     // at that frequency. References: T1, T2b "δ_total Φ" and "β Φ". Tolerance: printed precision
     // or 2e-5 relative.
     EXPECT_NEAR(constants.angularFrequency / (2.0 * std::numbers::pi), row.frequency,
                 printedTolerance(row.frequency, kFrequencyDigit));
     EXPECT_NEAR(constants.dampingConstant, row.total, printedTolerance(row.total, kPhiDeltaDigit));
-    EXPECT_NEAR(constants.decayRate, row.decayRate, printedTolerance(row.decayRate, row.decayDigit));
+    EXPECT_NEAR(constants.decayRate, row.decayRate,
+                printedTolerance(row.decayRate, row.decayDigit));
   }
 }
 
@@ -107,7 +111,8 @@ TEST(BubbleOscillator, DecayRateIsHalfAngularFrequencyTimesDampingConstant) {
   const LiquidProperties liquid;
   const OscillatorModel model;
   for (const double radius : {10e-6, 1e-3, 5e-2}) {
-    const OscillatorConstants constants = bubbleOscillator(radius, liquid.ambientPressure, liquid, model);
+    const OscillatorConstants constants =
+        bubbleOscillator(radius, liquid.ambientPressure, liquid, model);
     const double expected = constants.angularFrequency * constants.dampingConstant / 2.0;
     EXPECT_NEAR(constants.decayRate, expected, 1e-14 * expected);
   }
@@ -121,8 +126,10 @@ TEST(BubbleOscillator, GivenAmplitudeOverridesExcitationModel) {
   const OscillatorModel model;
   constexpr double kRadius = 1e-3;
   constexpr double kGivenAmplitude = 0.25;  // [Pa at 1 m]
-  const OscillatorConstants modelled = bubbleOscillator(kRadius, liquid.ambientPressure, liquid, model);
-  const OscillatorConstants given = bubbleOscillator(kRadius, liquid.ambientPressure, liquid, model, kGivenAmplitude);
+  const OscillatorConstants modelled =
+      bubbleOscillator(kRadius, liquid.ambientPressure, liquid, model);
+  const OscillatorConstants given =
+      bubbleOscillator(kRadius, liquid.ambientPressure, liquid, model, kGivenAmplitude);
   EXPECT_EQ(given.amplitude, kGivenAmplitude);
   EXPECT_EQ(given.angularFrequency, modelled.angularFrequency);
   EXPECT_EQ(given.dampingConstant, modelled.dampingConstant);
@@ -137,8 +144,12 @@ TEST(BubbleOscillator, HydrostaticPressureRaisesFrequencyBySection3Factor) {
   model.hydrostatic = true;
   constexpr double kRadius = 1e-3;
   constexpr double kDepth = 1.0;  // [m]
-  const double surface = bubbleOscillator(kRadius, ambientPressureAt(0.0, liquid, model), liquid, model).angularFrequency;
-  const double deep = bubbleOscillator(kRadius, ambientPressureAt(kDepth, liquid, model), liquid, model).angularFrequency;
+  const double surface =
+      bubbleOscillator(kRadius, ambientPressureAt(0.0, liquid, model), liquid, model)
+          .angularFrequency;
+  const double deep =
+      bubbleOscillator(kRadius, ambientPressureAt(kDepth, liquid, model), liquid, model)
+          .angularFrequency;
   EXPECT_NEAR(deep / surface, 1.0471, 0.5e-4);
 }
 
@@ -147,23 +158,26 @@ TEST(BubbleOscillator, ExtremeRadiiGiveFinitePositiveConstants) {
   // and 5 cm (STYLE.md scale range). Tolerance: exact.
   const LiquidProperties liquid;
   for (const double radius : {10e-6, 5e-2}) {
-    for (const PolytropicModel polytropic : {PolytropicModel::Adiabatic, PolytropicModel::Thermal}) {
+    for (const PolytropicModel polytropic :
+         {PolytropicModel::Adiabatic, PolytropicModel::Thermal}) {
       for (const DampingModel damping : {DampingModel::Devin, DampingModel::VanDenDoel}) {
         for (const ExcitationModel excitation :
              {ExcitationModel::NeckCollapseJet, ExcitationModel::InitialDisplacement}) {
           for (const bool vapour : {false, true}) {
-            SCOPED_TRACE(testing::Message()
-                         << "R = " << radius << " m, thermal " << (polytropic == PolytropicModel::Thermal)
-                         << ", van den Doel " << (damping == DampingModel::VanDenDoel) << ", jet "
-                         << (excitation == ExcitationModel::NeckCollapseJet) << ", vapour " << vapour);
+            SCOPED_TRACE(
+                testing::Message()
+                << "R = " << radius << " m, thermal " << (polytropic == PolytropicModel::Thermal)
+                << ", van den Doel " << (damping == DampingModel::VanDenDoel) << ", jet "
+                << (excitation == ExcitationModel::NeckCollapseJet) << ", vapour " << vapour);
             OscillatorModel model;
             model.polytropic = polytropic;
             model.damping = damping;
             model.excitation = excitation;
             model.vapour = vapour;
-            const OscillatorConstants constants = bubbleOscillator(radius, liquid.ambientPressure, liquid, model);
-            for (const double value :
-                 {constants.angularFrequency, constants.dampingConstant, constants.decayRate, constants.amplitude}) {
+            const OscillatorConstants constants =
+                bubbleOscillator(radius, liquid.ambientPressure, liquid, model);
+            for (const double value : {constants.angularFrequency, constants.dampingConstant,
+                                       constants.decayRate, constants.amplitude}) {
               EXPECT_TRUE(std::isfinite(value));
               EXPECT_GT(value, 0.0);
             }

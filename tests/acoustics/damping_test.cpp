@@ -22,29 +22,36 @@ double printedTolerance(double value, double lastDigit) {
   return std::max(0.5 * lastDigit, 2e-5 * std::abs(value));
 }
 
-/// One row of table T2a: Devin damping at f₀ = adiabatic + σ (default model) [shared physics.md §4].
+/// One row of table T2a: Devin damping at f₀ = adiabatic + σ (default model) [shared physics.md
+/// §4].
 struct T2aRow {
-  double radius;       // [m]
-  double frequency;    // f₀ [Hz]
-  double radiative;    // δ_rad
-  double viscous;      // δ_vis
-  double thermal;      // δ_th Devin
-  double total;        // δ_total
-  double quality;      // Q
-  double decayRate;    // β [1/s]
-  double t60;          // [ms]
-  double tMinus90;     // [ms]
-  double decayDigit;   // last printed digit of β [1/s]
-  double t60Digit;     // last printed digit of T60 and t₋₉₀dB [ms]
+  double radius;      // [m]
+  double frequency;   // f₀ [Hz]
+  double radiative;   // δ_rad
+  double viscous;     // δ_vis
+  double thermal;     // δ_th Devin
+  double total;       // δ_total
+  double quality;     // Q
+  double decayRate;   // β [1/s]
+  double t60;         // [ms]
+  double tMinus90;    // [ms]
+  double decayDigit;  // last printed digit of β [1/s]
+  double t60Digit;    // last printed digit of T60 and t₋₉₀dB [ms]
 };
 
 constexpr std::array<T2aRow, 7> kTableT2a = {{
-    {0.1e-3, 33044.7, 0.014010, 0.001934, 0.067535, 0.083479, 11.98, 8666.2, 0.797, 1.196, 0.1, 1e-3},
-    {0.25e-3, 13174.9, 0.013964, 0.000776, 0.046907, 0.061647, 16.22, 2551.6, 2.707, 4.061, 0.1, 1e-3},
-    {0.5e-3, 6580.3, 0.013949, 0.000389, 0.034721, 0.049059, 20.38, 1014.2, 6.811, 10.217, 0.1, 1e-3},
-    {1e-3, 3288.3, 0.013941, 0.000194, 0.025344, 0.039479, 25.33, 407.85, 16.937, 25.406, 0.01, 1e-3},
-    {2e-3, 1643.7, 0.013938, 0.000097, 0.018322, 0.032356, 30.91, 167.08, 41.343, 62.014, 0.01, 1e-3},
-    {4e-3, 821.7, 0.013936, 0.000049, 0.013157, 0.027142, 36.84, 70.07, 98.585, 147.878, 0.01, 1e-3},
+    {0.1e-3, 33044.7, 0.014010, 0.001934, 0.067535, 0.083479, 11.98, 8666.2, 0.797, 1.196, 0.1,
+     1e-3},
+    {0.25e-3, 13174.9, 0.013964, 0.000776, 0.046907, 0.061647, 16.22, 2551.6, 2.707, 4.061, 0.1,
+     1e-3},
+    {0.5e-3, 6580.3, 0.013949, 0.000389, 0.034721, 0.049059, 20.38, 1014.2, 6.811, 10.217, 0.1,
+     1e-3},
+    {1e-3, 3288.3, 0.013941, 0.000194, 0.025344, 0.039479, 25.33, 407.85, 16.937, 25.406, 0.01,
+     1e-3},
+    {2e-3, 1643.7, 0.013938, 0.000097, 0.018322, 0.032356, 30.91, 167.08, 41.343, 62.014, 0.01,
+     1e-3},
+    {4e-3, 821.7, 0.013936, 0.000049, 0.013157, 0.027142, 36.84, 70.07, 98.585, 147.878, 0.01,
+     1e-3},
     {5e-3, 657.4, 0.013935, 0.000039, 0.011815, 0.025789, 38.78, 53.26, 129.70, 194.55, 0.01, 1e-2},
 }};
 
@@ -54,11 +61,11 @@ constexpr double kQualityDigit = 0.01;
 
 /// One row of table T2b: the Φ (thermal polytropic) model and van den Doel [shared physics.md §4].
 struct T2bRow {
-  double radius;          // [m]
-  double totalPhi;        // δ_total Φ, at f₀ of T1 "σ, κ_eff"
-  double decayRatePhi;    // β Φ [1/s]
-  double vanDenDoel;      // d [1/s]
-  double decayDigit;      // last printed digit of β Φ and d [1/s]
+  double radius;        // [m]
+  double totalPhi;      // δ_total Φ, at f₀ of T1 "σ, κ_eff"
+  double decayRatePhi;  // β Φ [1/s]
+  double vanDenDoel;    // d [1/s]
+  double decayDigit;    // last printed digit of β Φ and d [1/s]
 };
 
 constexpr std::array<T2bRow, 7> kTableT2b = {{
@@ -114,7 +121,8 @@ TEST(Damping, DevinTotalQualityDecayRateAndDecayTimesMatchTableT2a) {
     // t₋₉₀dB = 4.5 ln10/β. Reference: T2a. Tolerance: printed precision of each column or 2e-5
     // relative.
     EXPECT_NEAR(damping.dampingConstant, row.total, printedTolerance(row.total, kDeltaDigit));
-    EXPECT_NEAR(1.0 / damping.dampingConstant, row.quality, printedTolerance(row.quality, kQualityDigit));
+    EXPECT_NEAR(1.0 / damping.dampingConstant, row.quality,
+                printedTolerance(row.quality, kQualityDigit));
     EXPECT_NEAR(damping.decayRate, row.decayRate, printedTolerance(row.decayRate, row.decayDigit));
     EXPECT_NEAR(kMillisecondsPerSecond * kT60DecayNepers / damping.decayRate, row.t60,
                 printedTolerance(row.t60, row.t60Digit));
@@ -135,8 +143,10 @@ TEST(Damping, ThermalPolytropicModelMatchesTableT2bPhiColumns) {
     // Claim: with κ_eff, δ_th = p_g0|Im Φ(ω₀)|/(ρR²ω₀²) at the κ_eff ω₀, plus δ_rad and δ_vis
     // there (Prosperetti 1991). Reference: T2b "δ_total Φ", "β Φ". Tolerance: printed precision
     // (5e-6 for δ; 0.05 or 0.005 1/s for β) or 2e-5 relative.
-    EXPECT_NEAR(damping.dampingConstant, row.totalPhi, printedTolerance(row.totalPhi, kPhiDeltaDigit));
-    EXPECT_NEAR(damping.decayRate, row.decayRatePhi, printedTolerance(row.decayRatePhi, row.decayDigit));
+    EXPECT_NEAR(damping.dampingConstant, row.totalPhi,
+                printedTolerance(row.totalPhi, kPhiDeltaDigit));
+    EXPECT_NEAR(damping.decayRate, row.decayRatePhi,
+                printedTolerance(row.decayRatePhi, row.decayDigit));
   }
 }
 
@@ -148,7 +158,8 @@ TEST(Damping, VanDenDoelDecayRateMatchesTableT2b) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
     // Claim: d = 0.13/r + 0.0072 r^(−3/2) 1/s (van den Doel 2005). Reference: T2b "d van den Doel".
     // Tolerance: printed precision (0.05 or 0.005 1/s) or 2e-5 relative.
-    EXPECT_NEAR(vanDenDoelDecayRate(row.radius), row.vanDenDoel, printedTolerance(row.vanDenDoel, row.decayDigit));
+    EXPECT_NEAR(vanDenDoelDecayRate(row.radius), row.vanDenDoel,
+                printedTolerance(row.vanDenDoel, row.decayDigit));
     // Claim: the VanDenDoel model sets β = d and δ = 2d/ω₀ (damping.h). Reference: the same
     // column. Tolerance: 1e-12 relative, float rounding only.
     const double omega = naturalAngularFrequency(row.radius, liquid.ambientPressure, liquid, model);
@@ -173,7 +184,8 @@ TEST(Damping, DevinThermalEqualsImaginaryOverRealPartOfPhi) {
       const double omega = omegaForDevinArgument(x, radius, kPressure, gas);
       const std::complex<double> phi = thermalPolytropicFunction(omega, radius, kPressure, gas);
       const double reference = std::abs(phi.imag()) / phi.real();
-      EXPECT_NEAR(thermalDampingConstant(omega, radius, kPressure, gas), reference, 1e-11 * reference);
+      EXPECT_NEAR(thermalDampingConstant(omega, radius, kPressure, gas), reference,
+                  1e-11 * reference);
     }
   }
 }
@@ -215,16 +227,19 @@ TEST(Damping, ExtremeRadiiGiveFinitePositiveDamping) {
   const LiquidProperties liquid;
   for (const double radius : {10e-6, 5e-2}) {
     for (const DampingModel dampingModel : {DampingModel::Devin, DampingModel::VanDenDoel}) {
-      for (const PolytropicModel polytropic : {PolytropicModel::Adiabatic, PolytropicModel::Thermal}) {
+      for (const PolytropicModel polytropic :
+           {PolytropicModel::Adiabatic, PolytropicModel::Thermal}) {
         for (const bool vapour : {false, true}) {
-          SCOPED_TRACE(testing::Message() << "R = " << radius << " m, van den Doel "
-                                          << (dampingModel == DampingModel::VanDenDoel) << ", thermal "
-                                          << (polytropic == PolytropicModel::Thermal) << ", vapour " << vapour);
+          SCOPED_TRACE(testing::Message()
+                       << "R = " << radius << " m, van den Doel "
+                       << (dampingModel == DampingModel::VanDenDoel) << ", thermal "
+                       << (polytropic == PolytropicModel::Thermal) << ", vapour " << vapour);
           OscillatorModel model;
           model.damping = dampingModel;
           model.polytropic = polytropic;
           model.vapour = vapour;
-          const double omega = naturalAngularFrequency(radius, liquid.ambientPressure, liquid, model);
+          const double omega =
+              naturalAngularFrequency(radius, liquid.ambientPressure, liquid, model);
           const double pressure = gasPressure(radius, liquid.ambientPressure, liquid, model);
           const Damping damping = bubbleDamping(radius, omega, pressure, liquid, model);
           EXPECT_TRUE(std::isfinite(damping.dampingConstant));

@@ -23,7 +23,7 @@ double printedTolerance(double value, double lastDigit) {
 
 /// One row of table T7 [shared physics.md §7.3].
 struct T7Row {
-  double radius;            // [m]
+  double radius;               // [m]
   double perUnitDisplacement;  // p(1 m) per unit ε [Pa]
   double atMilliDisplacement;  // p(1 m) at ε = 1e-3 [Pa]
   double jetDisplacement;      // jet: ε [-]
@@ -63,9 +63,11 @@ TEST(Excitation, JetPressureAndDisplacementMatchTableT7) {
     const double pressure = jetExcitationAmplitude(row.radius, omega, liquid, model);
     // Claim: Czerski & Deane neck-collapse forcing (Langlois et al. 2016 Eq. 14) with η = 0.84 and
     // T_c = min(0.6 ms, R/(6 m/s)), no damping during forcing, gives p(1 m) = ρω₀²|V|/(4π) and
-    // ε = |V|/(4πR³). Reference: T7 "jet: p(1 m)" and "jet: ε". Tolerance: 0.1 % (formula identity).
+    // ε = |V|/(4πR³). Reference: T7 "jet: p(1 m)" and "jet: ε". Tolerance: 0.1 % (formula
+    // identity).
     EXPECT_NEAR(pressure, row.jetPressure, kJetRelativeTolerance * row.jetPressure);
-    const double epsilon = pressure / displacementExcitationAmplitude(row.radius, omega, 1.0, liquid);
+    const double epsilon =
+        pressure / displacementExcitationAmplitude(row.radius, omega, 1.0, liquid);
     EXPECT_NEAR(epsilon, row.jetDisplacement, kJetRelativeTolerance * row.jetDisplacement);
   }
 }
@@ -80,8 +82,8 @@ TEST(Excitation, DisplacementAmplitudeMatchesTableT7) {
     // Claim: R = R₀(1 + ε) radiates p(1 m) = ρω₀²R₀³ε (monopole). Reference: T7 "p(1 m) per
     // unit ε" and "p(1 m), ε = 10⁻³" (via excitationAmplitude and the model's default ε).
     // Tolerance: printed precision (0.005 Pa; 5e-6 Pa) or 2e-5 relative.
-    EXPECT_NEAR(displacementExcitationAmplitude(row.radius, omega, 1.0, liquid), row.perUnitDisplacement,
-                printedTolerance(row.perUnitDisplacement, kPerUnitDigit));
+    EXPECT_NEAR(displacementExcitationAmplitude(row.radius, omega, 1.0, liquid),
+                row.perUnitDisplacement, printedTolerance(row.perUnitDisplacement, kPerUnitDigit));
     EXPECT_NEAR(excitationAmplitude(row.radius, omega, liquid, model), row.atMilliDisplacement,
                 printedTolerance(row.atMilliDisplacement, kMilliDigit));
   }
@@ -100,10 +102,10 @@ TEST(Excitation, DefaultModelUsesJetForcing) {
 }
 
 TEST(Excitation, JetAmplitudeMatchesSimpsonQuadratureOfTheForcing) {
-  // Claim: the closed form ∫₀^T t² e^(−iat) dt = [e^(−iat)(it²/a + 2t/a² − 2i/a³)]₀^T (and its series
-  // for small aT, used at 5 cm) equals the integral. Reference: composite Simpson quadrature of
-  // the forcing of excitation.h, 4000 intervals. Tolerance: 1e-9 relative; Simpson's error is
-  // ≈ (aT)⁴/(180·4000⁴) ≈ 6e-15 of T³ for aT ≤ 4, far below.
+  // Claim: the closed form ∫₀^T t² e^(−iat) dt = [e^(−iat)(it²/a + 2t/a² − 2i/a³)]₀^T (and its
+  // series for small aT, used at 5 cm) equals the integral. Reference: composite Simpson quadrature
+  // of the forcing of excitation.h, 4000 intervals. Tolerance: 1e-9 relative; Simpson's error is ≈
+  // (aT)⁴/(180·4000⁴) ≈ 6e-15 of T³ for aT ≤ 4, far below.
   const LiquidProperties liquid;
   const OscillatorModel model;
   const double gamma = liquid.gas.heatCapacityRatio;
@@ -115,7 +117,8 @@ TEST(Excitation, JetAmplitudeMatchesSimpsonQuadratureOfTheForcing) {
     const double omega = defaultAngularFrequency(radius, liquid);
     const double innerPressure = liquid.ambientPressure + 2.0 * liquid.surfaceTension / radius;
     const double forceCoefficient = 9.0 * gamma * liquid.surfaceTension * eta * innerPressure *
-                                    std::sqrt(1.0 + eta * eta) / (4.0 * liquid.density * std::pow(radius, 3));
+                                    std::sqrt(1.0 + eta * eta) /
+                                    (4.0 * liquid.density * std::pow(radius, 3));
     const double mass = liquid.density / (4.0 * std::numbers::pi * radius);
     const double duration = std::min(model.jetMaxDuration, radius / kClosingSpeed);
     const double step = duration / kIntervals;
@@ -157,12 +160,14 @@ TEST(Excitation, ExtremeRadiiGiveFinitePositiveAmplitudes) {
   // scale range; ω₀T_c ≈ 0.26 at 5 cm takes the series branch). Tolerance: exact.
   const LiquidProperties liquid;
   for (const double radius : {10e-6, 5e-2}) {
-    for (const ExcitationModel excitation : {ExcitationModel::NeckCollapseJet, ExcitationModel::InitialDisplacement}) {
+    for (const ExcitationModel excitation :
+         {ExcitationModel::NeckCollapseJet, ExcitationModel::InitialDisplacement}) {
       SCOPED_TRACE(testing::Message() << "R = " << radius << " m, jet "
                                       << (excitation == ExcitationModel::NeckCollapseJet));
       OscillatorModel model;
       model.excitation = excitation;
-      const double amplitude = excitationAmplitude(radius, defaultAngularFrequency(radius, liquid), liquid, model);
+      const double amplitude =
+          excitationAmplitude(radius, defaultAngularFrequency(radius, liquid), liquid, model);
       EXPECT_TRUE(std::isfinite(amplitude));
       EXPECT_GT(amplitude, 0.0);
     }

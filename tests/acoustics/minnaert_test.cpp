@@ -81,26 +81,28 @@ TEST(Minnaert, RuleOfThumbFrequencyTimesRadiusIs3Point2865) {
 
 TEST(Minnaert, WithoutSurfaceTensionEqualsBasicMinnaert) {
   // Claim: the linearised Rayleigh–Plesset ω₀ without σ and vapour reduces to Minnaert's formula.
-  // Reference: basicMinnaertFrequency (closed form). Tolerance: 1e-12 relative, float rounding only.
+  // Reference: basicMinnaertFrequency (closed form). Tolerance: 1e-12 relative, float rounding
+  // only.
   const LiquidProperties liquid;
   OscillatorModel model;
   model.surfaceTension = false;
   for (const T1Row& row : kTableT1) {
     const double basic = basicMinnaertFrequency(row.radius, liquid);
-    EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, model), basic, 1e-12 * basic);
+    EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, model), basic,
+                1e-12 * basic);
   }
 }
 
 TEST(Minnaert, DefaultModelMatchesTableT1WithSurfaceTension) {
-  // Claim: the default model is adiabatic κ = γ with surface tension, vapour off (oscillator_model.h),
-  // ω₀² = [3γ(p₀ + 2σ/R) − 2σ/R]/(ρR²). Reference: T1 "σ, κ=γ (default)".
+  // Claim: the default model is adiabatic κ = γ with surface tension, vapour off
+  // (oscillator_model.h), ω₀² = [3γ(p₀ + 2σ/R) − 2σ/R]/(ρR²). Reference: T1 "σ, κ=γ (default)".
   // Tolerance: printed precision (0.05 Hz) or 2e-5 relative.
   const LiquidProperties liquid;
   const OscillatorModel model;
   for (const T1Row& row : kTableT1) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
-    EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, model), row.surfaceTension,
-                printedTolerance(row.surfaceTension, kFrequencyDigit));
+    EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, model),
+                row.surfaceTension, printedTolerance(row.surfaceTension, kFrequencyDigit));
   }
 }
 
@@ -112,11 +114,14 @@ TEST(Minnaert, ThermalModelMatchesTableT1EffectivePolytropicColumns) {
     const double omega = naturalAngularFrequency(row.radius, liquid.ambientPressure, liquid, model);
     // Claim: ω₀ solves ω₀² = [p_g0 Re Φ(ω₀) − 2σ/R]/(ρR²) (Prosperetti 1991). Reference: T1
     // "σ, κ_eff (Φ)". Tolerance: printed precision (0.05 Hz) or 2e-5 relative.
-    EXPECT_NEAR(omega / (2.0 * std::numbers::pi), row.thermal, printedTolerance(row.thermal, kFrequencyDigit));
+    EXPECT_NEAR(omega / (2.0 * std::numbers::pi), row.thermal,
+                printedTolerance(row.thermal, kFrequencyDigit));
     // Claim: κ_eff = Re Φ(ω₀)/3 with D_g at p₀ + 2σ/R. Reference: T1 "κ_eff".
     // Tolerance: printed precision (5e-5) or 2e-5 relative.
-    const double internalPressure = liquid.ambientPressure + 2.0 * liquid.surfaceTension / row.radius;
-    const double kappa = thermalPolytropicFunction(omega, row.radius, internalPressure, liquid.gas).real() / 3.0;
+    const double internalPressure =
+        liquid.ambientPressure + 2.0 * liquid.surfaceTension / row.radius;
+    const double kappa =
+        thermalPolytropicFunction(omega, row.radius, internalPressure, liquid.gas).real() / 3.0;
     EXPECT_NEAR(kappa, row.kappaEffective, printedTolerance(row.kappaEffective, kKappaDigit));
   }
 }
@@ -129,14 +134,14 @@ TEST(Minnaert, VapourMatchesTableT1AdiabaticAndThermal) {
   thermal.vapour = true;
   for (const T1Row& row : kTableT1) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
-    // Claim: vapour enters the linearisation multiplied by 3κ: ω₀² = [3κ(p₀ − p_v + 2σ/R) − 2σ/R]/(ρR²),
-    // and Φ keeps D_g at p₀ + 2σ/R (T1 footnote). Reference: T1 "σ + p_v, κ=γ" and "σ + p_v, κ_eff".
-    // Tolerance: printed precision (0.05 Hz) or 2e-5 relative; the non-linearised variant differs
-    // by ≥ 0.9 % (shared physics.md §3) and would fail.
+    // Claim: vapour enters the linearisation multiplied by 3κ: ω₀² = [3κ(p₀ − p_v + 2σ/R) −
+    // 2σ/R]/(ρR²), and Φ keeps D_g at p₀ + 2σ/R (T1 footnote). Reference: T1 "σ + p_v, κ=γ" and "σ
+    // + p_v, κ_eff". Tolerance: printed precision (0.05 Hz) or 2e-5 relative; the non-linearised
+    // variant differs by ≥ 0.9 % (shared physics.md §3) and would fail.
     EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, adiabatic), row.vapour,
                 printedTolerance(row.vapour, kFrequencyDigit));
-    EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, thermal), row.vapourThermal,
-                printedTolerance(row.vapourThermal, kFrequencyDigit));
+    EXPECT_NEAR(naturalFrequency(row.radius, liquid.ambientPressure, liquid, thermal),
+                row.vapourThermal, printedTolerance(row.vapourThermal, kFrequencyDigit));
   }
 }
 
@@ -165,12 +170,16 @@ TEST(Minnaert, HydrostaticFactorAtOneMillimetreMatchesSection3) {
     double factor;     // f(p₀ + ρgh)/f(p₀)
     double lastDigit;  // of the printed factor
   };
-  constexpr std::array<Row, 5> kFactors = {{
-      {0.01, 1.00048, 1e-5}, {0.05, 1.0024, 1e-4}, {0.10, 1.0048, 1e-4}, {0.30, 1.0144, 1e-4}, {1.0, 1.0471, 1e-4}}};
+  constexpr std::array<Row, 5> kFactors = {{{0.01, 1.00048, 1e-5},
+                                            {0.05, 1.0024, 1e-4},
+                                            {0.10, 1.0048, 1e-4},
+                                            {0.30, 1.0144, 1e-4},
+                                            {1.0, 1.0471, 1e-4}}};
   const double surface = naturalFrequency(kRadius, liquid.ambientPressure, liquid, model);
   for (const Row& row : kFactors) {
     SCOPED_TRACE(testing::Message() << "h = " << row.depth << " m");
-    const double deep = naturalFrequency(kRadius, ambientPressureAt(row.depth, liquid, model), liquid, model);
+    const double deep =
+        naturalFrequency(kRadius, ambientPressureAt(row.depth, liquid, model), liquid, model);
     EXPECT_NEAR(deep / surface, row.factor, 0.5 * row.lastDigit);
   }
   // Claim: without the option the ambient pressure is p₀ at any depth (exact).
@@ -194,10 +203,11 @@ TEST(Minnaert, GasPressureFollowsSurfaceTensionAndVapourOptions) {
   OscillatorModel model;
   EXPECT_NEAR(gasPressure(kRadius, kAmbient, liquid, model), kAmbient + laplace, 1e-12 * kAmbient);
   model.vapour = true;
-  EXPECT_NEAR(gasPressure(kRadius, kAmbient, liquid, model), kAmbient + laplace - liquid.vapourPressure,
-              1e-12 * kAmbient);
+  EXPECT_NEAR(gasPressure(kRadius, kAmbient, liquid, model),
+              kAmbient + laplace - liquid.vapourPressure, 1e-12 * kAmbient);
   model.surfaceTension = false;
-  EXPECT_NEAR(gasPressure(kRadius, kAmbient, liquid, model), kAmbient - liquid.vapourPressure, 1e-12 * kAmbient);
+  EXPECT_NEAR(gasPressure(kRadius, kAmbient, liquid, model), kAmbient - liquid.vapourPressure,
+              1e-12 * kAmbient);
 }
 
 TEST(Minnaert, ThermalPolytropicFunctionTendsToIsothermalAndAdiabaticLimits) {
@@ -210,11 +220,15 @@ TEST(Minnaert, ThermalPolytropicFunctionTendsToIsothermalAndAdiabaticLimits) {
   constexpr double kPressure = 101325.0;
   const double diffusivity = gasThermalDiffusivity(kPressure, gas);
   // |z|² = ωR²/D_g.
-  const auto omegaFor = [&](double zModulus) { return zModulus * zModulus * diffusivity / (kRadius * kRadius); };
-  const std::complex<double> slow = thermalPolytropicFunction(omegaFor(1e-4), kRadius, kPressure, gas);
+  const auto omegaFor = [&](double zModulus) {
+    return zModulus * zModulus * diffusivity / (kRadius * kRadius);
+  };
+  const std::complex<double> slow =
+      thermalPolytropicFunction(omegaFor(1e-4), kRadius, kPressure, gas);
   EXPECT_NEAR(slow.real(), 3.0, 3.0 * 1e-8);
   EXPECT_NEAR(slow.imag(), 0.0, 3.0 * 1e-8);
-  const std::complex<double> fast = thermalPolytropicFunction(omegaFor(1e6), kRadius, kPressure, gas);
+  const std::complex<double> fast =
+      thermalPolytropicFunction(omegaFor(1e6), kRadius, kPressure, gas);
   const double adiabatic = 3.0 * gas.heatCapacityRatio;
   EXPECT_NEAR(fast.real(), adiabatic, adiabatic * 1e-5);
   EXPECT_NEAR(fast.imag(), 0.0, adiabatic * 1e-5);
@@ -231,11 +245,14 @@ TEST(Minnaert, ThermalPolytropicFunctionIsContinuousAcrossItsEvaluationBranches)
   const double diffusivity = gasThermalDiffusivity(kPressure, gas);
   for (const double zModulus : {0.1, 30.0}) {
     SCOPED_TRACE(testing::Message() << "|z| = " << zModulus);
-    const double below = (zModulus * (1.0 - 1e-9)) * (zModulus * (1.0 - 1e-9)) * diffusivity / (kRadius * kRadius);
-    const double above = (zModulus * (1.0 + 1e-9)) * (zModulus * (1.0 + 1e-9)) * diffusivity / (kRadius * kRadius);
+    const double below =
+        (zModulus * (1.0 - 1e-9)) * (zModulus * (1.0 - 1e-9)) * diffusivity / (kRadius * kRadius);
+    const double above =
+        (zModulus * (1.0 + 1e-9)) * (zModulus * (1.0 + 1e-9)) * diffusivity / (kRadius * kRadius);
     const std::complex<double> phiBelow = thermalPolytropicFunction(below, kRadius, kPressure, gas);
     const std::complex<double> phiAbove = thermalPolytropicFunction(above, kRadius, kPressure, gas);
-    EXPECT_LT(std::abs(phiAbove - phiBelow), 1e-8 * std::abs(phiBelow)) << phiBelow << " vs " << phiAbove;
+    EXPECT_LT(std::abs(phiAbove - phiBelow), 1e-8 * std::abs(phiBelow))
+        << phiBelow << " vs " << phiAbove;
   }
 }
 
@@ -251,12 +268,15 @@ TEST(Minnaert, RealPartOfPhiEqualsDevinClosedFormPolytropicIndex) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
     const double omega = naturalAngularFrequency(row.radius, liquid.ambientPressure, liquid, model);
     const double pressure = gasPressure(row.radius, liquid.ambientPressure, liquid, model);
-    const double x = row.radius * std::sqrt(2.0 * omega / gasThermalDiffusivity(pressure, liquid.gas));
+    const double x =
+        row.radius * std::sqrt(2.0 * omega / gasThermalDiffusivity(pressure, liquid.gas));
     const double deltaThermal = thermalDampingConstant(omega, row.radius, pressure, liquid.gas);
     const double devinKappa =
         gamma / ((1.0 + deltaThermal * deltaThermal) *
-                 (1.0 + 3.0 * (gamma - 1.0) / x * (std::sinh(x) - std::sin(x)) / (std::cosh(x) - std::cos(x))));
-    const double phiKappa = thermalPolytropicFunction(omega, row.radius, pressure, liquid.gas).real() / 3.0;
+                 (1.0 + 3.0 * (gamma - 1.0) / x * (std::sinh(x) - std::sin(x)) /
+                            (std::cosh(x) - std::cos(x))));
+    const double phiKappa =
+        thermalPolytropicFunction(omega, row.radius, pressure, liquid.gas).real() / 3.0;
     EXPECT_NEAR(phiKappa, devinKappa, 1e-12 * devinKappa);
   }
 }
@@ -275,7 +295,8 @@ TEST(Minnaert, ThermalFixedPointSatisfiesItsFrequencyEquation) {
       const double omega = naturalAngularFrequency(radius, liquid.ambientPressure, liquid, model);
       const double laplace = 2.0 * liquid.surfaceTension / radius;
       const double phi =
-          thermalPolytropicFunction(omega, radius, liquid.ambientPressure + laplace, liquid.gas).real();
+          thermalPolytropicFunction(omega, radius, liquid.ambientPressure + laplace, liquid.gas)
+              .real();
       const double lhs = liquid.density * radius * radius * omega * omega;
       const double rhs = gasPressure(radius, liquid.ambientPressure, liquid, model) * phi - laplace;
       EXPECT_NEAR(lhs, rhs, 1e-10 * rhs);
@@ -294,11 +315,14 @@ TEST(Minnaert, NyquistRadiiMatchSection3) {
     double radius;      // [m]
   };
   constexpr double kHalfDigit = 0.05e-6;  // [m]
-  for (const Row& row : {Row{44100.0, 0.1496e-3}, Row{48000.0, 0.1375e-3}, Row{96000.0, 0.0690e-3}}) {
+  for (const Row& row :
+       {Row{44100.0, 0.1496e-3}, Row{48000.0, 0.1375e-3}, Row{96000.0, 0.0690e-3}}) {
     SCOPED_TRACE(testing::Message() << "fs = " << row.sampleRate << " Hz");
     const double nyquist = row.sampleRate / 2.0;
-    EXPECT_GT(naturalFrequency(row.radius - kHalfDigit, liquid.ambientPressure, liquid, model), nyquist);
-    EXPECT_LT(naturalFrequency(row.radius + kHalfDigit, liquid.ambientPressure, liquid, model), nyquist);
+    EXPECT_GT(naturalFrequency(row.radius - kHalfDigit, liquid.ambientPressure, liquid, model),
+              nyquist);
+    EXPECT_LT(naturalFrequency(row.radius + kHalfDigit, liquid.ambientPressure, liquid, model),
+              nyquist);
   }
 }
 
@@ -307,7 +331,8 @@ TEST(Minnaert, ExtremeRadiiGiveFinitePositiveFrequencies) {
   // Reference: finiteness and sign. Tolerance: exact.
   const LiquidProperties liquid;
   for (const double radius : kExtremeRadii) {
-    for (const PolytropicModel polytropic : {PolytropicModel::Adiabatic, PolytropicModel::Thermal}) {
+    for (const PolytropicModel polytropic :
+         {PolytropicModel::Adiabatic, PolytropicModel::Thermal}) {
       for (const bool vapour : {false, true}) {
         for (const bool hydrostatic : {false, true}) {
           SCOPED_TRACE(testing::Message() << "R = " << radius << " m, thermal "
@@ -334,7 +359,8 @@ TEST(Minnaert, NonPositiveRestoringPressureThrows) {
   liquid.ambientPressure = 100.0;  // [Pa], far below p_v = 2339 Pa
   OscillatorModel model;
   model.vapour = true;
-  EXPECT_THROW(naturalAngularFrequency(5e-2, liquid.ambientPressure, liquid, model), std::domain_error);
+  EXPECT_THROW(naturalAngularFrequency(5e-2, liquid.ambientPressure, liquid, model),
+               std::domain_error);
 }
 
 }  // namespace

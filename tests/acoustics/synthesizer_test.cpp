@@ -55,7 +55,8 @@ BubbleTrack risingBubble(double radius, double birth, double fromDepth, double t
     TrackSample s;
     s.time = birth + k / 30.0;
     s.depth = fromDepth + (toDepth - fromDepth) * u;
-    for (std::size_t c = 0; c < channels; ++c) s.transfer.push_back(0.5 + 0.4 * u * (c + 1.0) / channels);
+    for (std::size_t c = 0; c < channels; ++c)
+      s.transfer.push_back(0.5 + 0.4 * u * (c + 1.0) / channels);
     b.track.push_back(s);
   }
   return b;
@@ -69,7 +70,8 @@ struct TrackInterpolatorReference {
       : bubble(b), constants(c), interp(b, 1) {}
   std::pair<double, double> at(double t) const {
     const TrackValues values = interp.evaluate(t, cursor);
-    const double w = constants.angularFrequency * freeSurfaceFrequencyRatio(bubble.radius, values.depth);
+    const double w =
+        constants.angularFrequency * freeSurfaceFrequencyRatio(bubble.radius, values.depth);
     return {values.transfer[0], std::sqrt(w * w - constants.decayRate * constants.decayRate)};
   }
   const BubbleTrack& bubble;
@@ -82,7 +84,8 @@ class DeepBubble : public ::testing::TestWithParam<double> {};
 
 // Validation matrix #1 and #2 (physics.md §9): the rendered tone of a deep bubble rings at the
 // model's damped frequency f_d = √(ω₀² − β²)/2π within 0.2 % (FFT-peak estimator error ≤ 0.002 %,
-// T8) and decays at the model's β within 1 % (matrix pencil ≤ 0.002 %, robust Hilbert ≤ 0.25 %, T8).
+// T8) and decays at the model's β within 1 % (matrix pencil ≤ 0.002 %, robust Hilbert ≤ 0.25 %,
+// T8).
 TEST_P(DeepBubble, RingsAtModelFrequencyAndDecaysAtModelRate) {
   const double radius = GetParam();
   const SynthesisSettings s = defaultSettings();
@@ -113,10 +116,12 @@ TEST(Synthesizer, DeepBubbleEqualsAnalyticDampedSineForOffGridBirth) {
   double worst = 0.0;
   for (std::size_t n = 0; n < x.size(); ++n) {
     const double t = n / kSampleRate - birth;
-    const double expected = t < 0 ? 0.0 : c.amplitude * std::exp(-c.decayRate * t) * std::sin(wd * t);
+    const double expected =
+        t < 0 ? 0.0 : c.amplitude * std::exp(-c.decayRate * t) * std::sin(wd * t);
     worst = std::max(worst, std::fabs(x[n] - expected));
   }
-  EXPECT_LT(worst, 1e-4 * c.amplitude) << "worst deviation " << worst << " Pa of A = " << c.amplitude;
+  EXPECT_LT(worst, 1e-4 * c.amplitude)
+      << "worst deviation " << worst << " Pa of A = " << c.amplitude;
 }
 
 // The phase integrates the instantaneous frequency: a bubble whose depth (and so frequency) moves
@@ -141,11 +146,11 @@ TEST(Synthesizer, MovingBubblePhaseIntegratesInstantaneousFrequency) {
     const double expected = gain * c.amplitude * std::exp(-c.decayRate * t) * std::sin(phase);
     worst = std::max(worst, std::fabs(x[n] - expected));
     for (int k = 0; k < kSubSteps; ++k)
-      phase += reference.at(t + (k + 0.5) / (kSubSteps * kSampleRate)).second / (kSubSteps * kSampleRate);
+      phase += reference.at(t + (k + 0.5) / (kSubSteps * kSampleRate)).second /
+               (kSubSteps * kSampleRate);
   }
   EXPECT_LT(worst, 2e-3 * c.amplitude) << "worst deviation " << worst << " Pa";
 }
-
 
 // Validation matrix #5 (physics.md §9, T3): at a constant depth h below a pressure-release surface
 // the measured frequency ratio f(h)/f∞ equals Strasberg's (1 − x − x⁴)^(−1/2), x = R/2h, within
@@ -153,12 +158,14 @@ TEST(Synthesizer, MovingBubblePhaseIntegratesInstantaneousFrequency) {
 TEST(Synthesizer, FrequencyNearFreeSurfaceFollowsStrasberg) {
   const SynthesisSettings s = defaultSettings();
   for (const double radius : {1e-3, 2e-3}) {
-    const double deep = fftPeakFrequency(renderSingleBubble(radius, std::nullopt, 1.0, s), kSampleRate);
+    const double deep =
+        fftPeakFrequency(renderSingleBubble(radius, std::nullopt, 1.0, s), kSampleRate);
     for (const double hOverR : {1.5, 2.0, 5.0}) {
       const double h = hOverR * radius;
       const double shifted = fftPeakFrequency(renderSingleBubble(radius, h, 1.0, s), kSampleRate);
       const double expected = freeSurfaceFrequencyRatio(radius, h);
-      EXPECT_NEAR(shifted / deep, expected, 1e-3 * expected) << "R = " << radius << ", h = " << hOverR << "R";
+      EXPECT_NEAR(shifted / deep, expected, 1e-3 * expected)
+          << "R = " << radius << ", h = " << hOverR << "R";
     }
   }
 }
@@ -191,7 +198,8 @@ TEST(Synthesizer, BubblesSuperposeAndTransferScalesLinearly) {
   a.bubbles = {risingBubble(1e-3, 0.0101, 30e-3, 2e-3, 2)};
   b.bubbles = {risingBubble(2e-3, 0.0123, 10e-3, 4e-3, 2)};
   both.bubbles = {a.bubbles[0], b.bubbles[0]};
-  const auto xa = synthesize(a, s).channels, xb = synthesize(b, s).channels, xab = synthesize(both, s).channels;
+  const auto xa = synthesize(a, s).channels, xb = synthesize(b, s).channels,
+             xab = synthesize(both, s).channels;
   for (std::size_t ch = 0; ch < 2; ++ch) {
     double err = 0.0;
     for (std::size_t n = 0; n < xab[ch].size(); ++n)
@@ -205,7 +213,8 @@ TEST(Synthesizer, BubblesSuperposeAndTransferScalesLinearly) {
   const auto xk = synthesize(scaled, s).channels;
   for (std::size_t ch = 0; ch < 2; ++ch) {
     double err = 0.0;
-    for (std::size_t n = 0; n < xk[ch].size(); ++n) err = std::max(err, std::fabs(xk[ch][n] - k * xa[ch][n]));
+    for (std::size_t n = 0; n < xk[ch].size(); ++n)
+      err = std::max(err, std::fabs(xk[ch][n] - k * xa[ch][n]));
     EXPECT_LT(err, 1e-6 * peak(xk[ch])) << "channel " << ch;
   }
 }
@@ -214,8 +223,8 @@ BubbleTrackSet manyMovingBubbles(std::size_t count, double span, std::uint64_t s
   BubbleTrackSet set;
   set.listeners = {"left", "right"};
   std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> birth(0.0, span), logRadius(std::log(0.3e-3), std::log(4e-3)),
-      depth(5e-3, 40e-3);
+  std::uniform_real_distribution<double> birth(0.0, span),
+      logRadius(std::log(0.3e-3), std::log(4e-3)), depth(5e-3, 40e-3);
   for (std::size_t i = 0; i < count; ++i) {
     const double r = std::exp(logRadius(random));
     set.bubbles.push_back(risingBubble(r, birth(random), depth(random), 1.6 * r, 2, 4));
@@ -233,7 +242,8 @@ TEST(Synthesizer, IdenticalBitsForAnyThreadCount) {
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t ch = 0; ch < one.size(); ++ch) {
     ASSERT_EQ(one[ch].size(), two[ch].size());
-    EXPECT_EQ(0, std::memcmp(one[ch].data(), two[ch].data(), one[ch].size() * sizeof(float))) << "channel " << ch;
+    EXPECT_EQ(0, std::memcmp(one[ch].data(), two[ch].data(), one[ch].size() * sizeof(float)))
+        << "channel " << ch;
   }
   EXPECT_GT(peak(one[0]), 0.0);
 }
@@ -259,8 +269,8 @@ TEST(Synthesizer, ExtremeInputsGiveFiniteOutput) {
 // Validation matrix #16: the smallest radius below Nyquist is 0.1375 mm at 48 kHz and 0.1496 mm
 // at 44.1 kHz (physics.md §3); bubbles above Nyquist are dropped and counted, the others kept.
 TEST(Synthesizer, DropsOnlyBubblesAboveNyquist) {
-  for (const auto& [rate, below, above] : {std::tuple{48000.0, 0.135e-3, 0.140e-3},
-                                           std::tuple{44100.0, 0.147e-3, 0.152e-3}}) {
+  for (const auto& [rate, below, above] :
+       {std::tuple{48000.0, 0.135e-3, 0.140e-3}, std::tuple{44100.0, 0.147e-3, 0.152e-3}}) {
     SynthesisSettings s = defaultSettings();
     s.sampleRate = rate;
     BubbleTrackSet set;

@@ -3,6 +3,8 @@
 // Each test prints its worst measured error, so the margins below can be checked at a glance.
 #include "acoustics/tone_analysis.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,11 +15,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unsupported/Eigen/FFT>
 #include <utility>
 #include <vector>
-
-#include <gtest/gtest.h>
-#include <unsupported/Eigen/FFT>
 
 namespace fluidsound::acoustics {
 namespace {
@@ -39,7 +39,7 @@ constexpr std::array<T2aBubble, 6> kT2aBubbles{{{0.25, 13174.9, 2551.6},
                                                 {4.0, 821.7, 70.07},
                                                 {5.0, 657.4, 53.26}}};
 constexpr std::array<double, 2> kSampleRates{44100.0, 48000.0};  // Hz
-constexpr std::array<double, 2> kDurations{0.1, 0.5};             // s
+constexpr std::array<double, 2> kDurations{0.1, 0.5};            // s
 
 enum class Onset { Sine, Cosine };
 enum class SampleFormat { Float32, Pcm16 };
@@ -88,8 +88,8 @@ struct ToneCase {
   std::string describe() const {
     std::ostringstream out;
     out << "R = " << bubble.radiusMillimetres << " mm (f = " << bubble.frequency
-        << " Hz, β = " << bubble.decayRate << " /s), fs = " << sampleRate << " Hz, "
-        << duration << " s, " << (onset == Onset::Sine ? "sin" : "cos") << " onset, "
+        << " Hz, β = " << bubble.decayRate << " /s), fs = " << sampleRate << " Hz, " << duration
+        << " s, " << (onset == Onset::Sine ? "sin" : "cos") << " onset, "
         << (format == SampleFormat::Float32 ? "float32" : "pcm16");
     return out.str();
   }
@@ -228,8 +228,8 @@ TEST(MatrixPencilEstimate, ResolvesAWindowShorterThanFivePeriods) {
 TEST(MatrixPencilEstimate, RejectsFewerThan16Samples) {
   // Claim: the documented precondition is enforced, both for a short signal and for a
   // maxSamples that truncates a long one below 16.
-  const std::vector<float> tone = dampedTone(3288.3, 407.85, 48000.0, 0.01, 0.0,
-                                             SampleFormat::Float32);
+  const std::vector<float> tone =
+      dampedTone(3288.3, 407.85, 48000.0, 0.01, 0.0, SampleFormat::Float32);
   EXPECT_THROW(matrixPencilEstimate(std::span<const float>(tone).first(15), 48000.0),
                std::invalid_argument);
   EXPECT_THROW(matrixPencilEstimate(tone, 48000.0, 15), std::invalid_argument);
@@ -255,8 +255,8 @@ double naiveHilbertDecayRate(const std::vector<float>& signal, double sampleRate
   fft.inv(analytic, spectrum);
   std::vector<double> envelope(n);
   for (std::size_t i = 0; i < n; ++i) envelope[i] = std::abs(analytic[i]);
-  const auto peak = static_cast<std::size_t>(
-      std::max_element(envelope.begin(), envelope.end()) - envelope.begin());
+  const auto peak = static_cast<std::size_t>(std::max_element(envelope.begin(), envelope.end()) -
+                                             envelope.begin());
   const double threshold = envelope[peak] * std::pow(10.0, -kNaiveRangeDecibels / 20.0);
   const auto guard = static_cast<std::size_t>(std::lround(kNaiveGuardSeconds * sampleRate));
   double sumT = 0.0, sumY = 0.0, sumTT = 0.0, sumTY = 0.0, count = 0.0;
@@ -321,12 +321,12 @@ TEST(HilbertDecayRate, IsImmuneToTheWrappedOnsetOfSineOnsetLowTones) {
         dampedTone(p.frequency, p.decayRate, kSampleRate, kDuration, 0.0, SampleFormat::Float32);
     const double robust = hilbertDecayRate(tone, kSampleRate, p.frequency);
     const double naive = naiveHilbertDecayRate(tone, kSampleRate);
-    const std::string where = std::to_string(p.frequency) + " Hz (naive fit: " +
-                              std::to_string(naive) + " /s)";
+    const std::string where =
+        std::to_string(p.frequency) + " Hz (naive fit: " + std::to_string(naive) + " /s)";
     worst.check(robust, p.decayRate, where);
     EXPECT_NEAR(robust, p.decayRate, kTolerance * p.decayRate) << where;
-    EXPECT_LT(naive, 0.5 * p.decayRate) << "the pitfall tone no longer defeats the naive fit: "
-                                        << where;
+    EXPECT_LT(naive, 0.5 * p.decayRate)
+        << "the pitfall tone no longer defeats the naive fit: " << where;
   }
 }
 
@@ -391,17 +391,16 @@ TEST(MatrixPencilEstimate, HoldsForAnyOnsetPhase) {
   constexpr std::array<double, 1> kRate{44100.0};
   WorstError worstFrequency("matrix-pencil f (any onset phase)");
   WorstError worstDecay("matrix-pencil β (any onset phase)");
-  forEachOnsetPhase(std::span(kT2aBubbles).first(3), kRate,
-                    [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
-                        const std::string& where) {
-                      const DampedToneEstimate e = matrixPencilEstimate(tone, sampleRate);
-                      worstFrequency.check(e.frequency, bubble.frequency, where);
-                      worstDecay.check(e.decayRate, bubble.decayRate, where);
-                      EXPECT_NEAR(e.frequency, bubble.frequency, kTolerance * bubble.frequency)
-                          << where;
-                      EXPECT_NEAR(e.decayRate, bubble.decayRate, kTolerance * bubble.decayRate)
-                          << where;
-                    });
+  forEachOnsetPhase(
+      std::span(kT2aBubbles).first(3), kRate,
+      [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
+          const std::string& where) {
+        const DampedToneEstimate e = matrixPencilEstimate(tone, sampleRate);
+        worstFrequency.check(e.frequency, bubble.frequency, where);
+        worstDecay.check(e.decayRate, bubble.decayRate, where);
+        EXPECT_NEAR(e.frequency, bubble.frequency, kTolerance * bubble.frequency) << where;
+        EXPECT_NEAR(e.decayRate, bubble.decayRate, kTolerance * bubble.decayRate) << where;
+      });
 }
 
 TEST(HilbertDecayRate, HoldsWithin025PercentForAnyOnsetPhaseUpTo6600Hz) {
@@ -466,7 +465,7 @@ TEST(ZeroCrossingFrequencies, TracksALinearChirpWithin02PercentPerPeriod) {
   // the pitch has risen by ξ·ln 100 = 46 %, to 4803 Hz), 48 kHz; (b) an undamped sweep
   // 500 → 4500 Hz in 0.1 s at 44.1 kHz. The period counts are fixed by the phase.
   constexpr double kTolerance = 0.2e-2;
-  constexpr double kRiseFactor = 0.1;                      // ξ, §7.4
+  constexpr double kRiseFactor = 0.1;                     // ξ, §7.4
   const double fortyDecibelTimeFactor = std::log(100.0);  // β·t at −40 dB
   struct ChirpCase {
     std::string name;

@@ -111,7 +111,6 @@ TEST(AudioFile, FloatWavRoundTripIsBitExact) {
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"render.wav"});
 }
 
-
 TEST(AudioFile, TheSameAudioWrittenTwiceGivesTheSameBytes) {
   // Claim: a float WAV holds nothing but the format and the samples — no PEAK chunk, which
   // libsndfile stamps with the time of writing — so the same render written twice, a second
@@ -119,7 +118,8 @@ TEST(AudioFile, TheSameAudioWrittenTwiceGivesTheSameBytes) {
   TempFolder folder;
   const AudioBuffer audio = testSignal(0.5);
   writeAudio(folder.path() / "a.wav", audio, {});
-  std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the chunk's clock ticks in seconds
+  std::this_thread::sleep_for(
+      std::chrono::milliseconds(1100));  // the chunk's clock ticks in seconds
   writeAudio(folder.path() / "b.wav", audio, {});
   const auto bytes = [](const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -127,7 +127,8 @@ TEST(AudioFile, TheSameAudioWrittenTwiceGivesTheSameBytes) {
   };
   const std::string a = bytes(folder.path() / "a.wav");
   EXPECT_EQ(a.find("PEAK"), std::string::npos) << "a PEAK chunk";
-  EXPECT_TRUE(a == bytes(folder.path() / "b.wav")) << "the two files differ";  // not printed: binary
+  EXPECT_TRUE(a == bytes(folder.path() / "b.wav"))
+      << "the two files differ";  // not printed: binary
 }
 TEST(AudioFile, Pcm16RoundTripIsWithinQuantisationAndDither) {
   TempFolder folder;

@@ -66,7 +66,8 @@ TEST(ParticleEmission, ParticlesFillTheSweptCylinderWithTheNozzleVelocity) {
   const Emitter nozzle = downwardNozzle();
   EmitterState state;
   Particles particles;
-  EXPECT_EQ(emitParticles(particles, nozzle, state, 0.0, 0.1, grid, 8, noSolid, 1, 0), 0u) << "before start";
+  EXPECT_EQ(emitParticles(particles, nozzle, state, 0.0, 0.1, grid, 8, noSolid, 1, 0), 0u)
+      << "before start";
   const double dt = 0.004;
   ASSERT_GT(emitParticles(particles, nozzle, state, 0.2, 0.2 + dt, grid, 8, noSolid, 1, 0), 20u);
   for (std::size_t p = 0; p < particles.size(); ++p) {
@@ -80,7 +81,8 @@ TEST(ParticleEmission, ParticlesFillTheSweptCylinderWithTheNozzleVelocity) {
     EXPECT_FLOAT_EQ(particles.velocity[p][0], 0.0f);
   }
   const std::size_t before = particles.size();
-  EXPECT_EQ(emitParticles(particles, nozzle, state, 0.6, 0.7, grid, 8, noSolid, 1, 0), 0u) << "after end";
+  EXPECT_EQ(emitParticles(particles, nozzle, state, 0.6, 0.7, grid, 8, noSolid, 1, 0), 0u)
+      << "after end";
   EXPECT_EQ(particles.size(), before);
 }
 

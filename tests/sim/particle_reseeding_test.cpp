@@ -53,7 +53,8 @@ struct Fixture {
 
   ReseedingCount reseed(Particles& p, std::uint64_t pass = 1) {
     const CellIndex index = sortParticlesByCell(p, grid);
-    return reseedParticles(p, index, liquidPhi, SolidBoundary{solidNodes, noMeshes, 0.0, 0.0}, velocity, grid, ReseedingLimits{}, 7, pass);
+    return reseedParticles(p, index, liquidPhi, SolidBoundary{solidNodes, noMeshes, 0.0, 0.0},
+                           velocity, grid, ReseedingLimits{}, 7, pass);
   }
 };
 
