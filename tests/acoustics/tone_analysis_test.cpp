@@ -48,6 +48,10 @@ enum class SampleFormat { Float32, Pcm16 };
 constexpr double kPcmPeakDbfs = -0.9;
 constexpr double kPcmFullScale = 32768.0;
 
+std::string formatName(SampleFormat format) {
+  return format == SampleFormat::Float32 ? "float32" : "pcm16";
+}
+
 double onsetPhase(Onset onset) { return onset == Onset::Sine ? 0.0 : 0.5 * std::numbers::pi; }
 
 /// Samples of e^(−βt)·sin(2πft + φ₀), t = n/fs, evaluated in double and stored as float32 or as
@@ -89,8 +93,7 @@ struct ToneCase {
     std::ostringstream out;
     out << "R = " << bubble.radiusMillimetres << " mm (f = " << bubble.frequency
         << " Hz, β = " << bubble.decayRate << " /s), fs = " << sampleRate << " Hz, " << duration
-        << " s, " << (onset == Onset::Sine ? "sin" : "cos") << " onset, "
-        << (format == SampleFormat::Float32 ? "float32" : "pcm16");
+        << " s, " << (onset == Onset::Sine ? "sin" : "cos") << " onset, " << formatName(format);
     return out.str();
   }
 };
@@ -115,14 +118,16 @@ std::vector<ToneCase> t2aGrid(SampleFormat format) {
 class WorstError {
  public:
   explicit WorstError(std::string quantity) : quantity_(std::move(quantity)) {}
-  double check(double measured, double expected, const std::string& where) {
+  /// Records the relative error of `measured` and expects it within `tolerance` of `expected`
+  /// (EXPECT_NEAR with a bound of tolerance × expected, naming `where` on failure).
+  void expectNear(double measured, double expected, double tolerance, const std::string& where) {
     const double relative = std::abs(measured / expected - 1.0);
     if (relative >= worst_) {
       worst_ = relative;
       where_ = where + ": measured " + std::to_string(measured) + ", expected " +
                std::to_string(expected);
     }
-    return relative;
+    EXPECT_NEAR(measured, expected, tolerance * expected) << where;
   }
   ~WorstError() {
     std::cout << "[ measured ] worst " << quantity_ << " error " << worst_ * 100.0 << " % ("
@@ -135,6 +140,51 @@ class WorstError {
   std::string where_;
 };
 
+/// The worst errors of the matrix pencil's f and β in a test, printed at its end.
+class PencilErrors {
+ public:
+  explicit PencilErrors(const std::string& label)
+      : frequency_("matrix-pencil f (" + label + ")"),
+        decayRate_("matrix-pencil β (" + label + ")") {}
+  /// Expects the estimate's f and β each within `tolerance` (relative) of the bubble's.
+  void expectNear(const DampedToneEstimate& estimate, const T2aBubble& bubble, double tolerance,
+                  const std::string& where) {
+    frequency_.expectNear(estimate.frequency, bubble.frequency, tolerance, where);
+    decayRate_.expectNear(estimate.decayRate, bubble.decayRate, tolerance, where);
+  }
+
+ private:
+  WorstError frequency_;
+  WorstError decayRate_;
+};
+
+/// Expects the FFT peak's f of every grid tone in `format` within `tolerance` (relative).
+void expectFftPeakFrequencyOnGrid(SampleFormat format, double tolerance) {
+  WorstError worst("FFT-peak f (" + formatName(format) + ")");
+  for (const ToneCase& c : t2aGrid(format)) {
+    worst.expectNear(fftPeakFrequency(c.samples(), c.sampleRate), c.bubble.frequency, tolerance,
+                     c.describe());
+  }
+}
+
+/// Expects the matrix pencil's f and β of every grid tone in `format` within `tolerance`.
+void expectMatrixPencilOnGrid(SampleFormat format, double tolerance) {
+  PencilErrors worst(formatName(format));
+  for (const ToneCase& c : t2aGrid(format)) {
+    worst.expectNear(matrixPencilEstimate(c.samples(), c.sampleRate), c.bubble, tolerance,
+                     c.describe());
+  }
+}
+
+/// Expects the robust Hilbert β of every grid tone in `format` within `tolerance` (relative).
+void expectHilbertDecayRateOnGrid(SampleFormat format, double tolerance) {
+  WorstError worst("Hilbert β (" + formatName(format) + ")");
+  for (const ToneCase& c : t2aGrid(format)) {
+    worst.expectNear(hilbertDecayRate(c.samples(), c.sampleRate, c.bubble.frequency),
+                     c.bubble.decayRate, tolerance, c.describe());
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // FFT peak
 
@@ -144,12 +194,7 @@ TEST(FftPeakFrequency, MatchesT2aFrequencyWithin0002PercentInFloat32) {
   // validation budget). Float32 rounding is far below it: T8 lists 0.0000 %, and the residual is
   // the parabola's fit to the Hann lobe, a few 10⁻⁵ % with 8× padding.
   constexpr double kTolerance = 0.002e-2;
-  WorstError worst("FFT-peak f (float32)");
-  for (const ToneCase& c : t2aGrid(SampleFormat::Float32)) {
-    const double f = fftPeakFrequency(c.samples(), c.sampleRate);
-    worst.check(f, c.bubble.frequency, c.describe());
-    EXPECT_NEAR(f, c.bubble.frequency, kTolerance * c.bubble.frequency) << c.describe();
-  }
+  expectFftPeakFrequencyOnGrid(SampleFormat::Float32, kTolerance);
 }
 
 TEST(FftPeakFrequency, MatchesT2aFrequencyWithin0002PercentInPcm16) {
@@ -157,12 +202,7 @@ TEST(FftPeakFrequency, MatchesT2aFrequencyWithin0002PercentInPcm16) {
   // 0.0018 %. Undithered rounding adds an error correlated with the tone; it moves the vertex most
   // for the 13 kHz tone, whose spectral peak is the broadest (half-width β/2π ≈ 400 Hz).
   constexpr double kTolerance = 0.002e-2;
-  WorstError worst("FFT-peak f (pcm16)");
-  for (const ToneCase& c : t2aGrid(SampleFormat::Pcm16)) {
-    const double f = fftPeakFrequency(c.samples(), c.sampleRate);
-    worst.check(f, c.bubble.frequency, c.describe());
-    EXPECT_NEAR(f, c.bubble.frequency, kTolerance * c.bubble.frequency) << c.describe();
-  }
+  expectFftPeakFrequencyOnGrid(SampleFormat::Pcm16, kTolerance);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -174,17 +214,7 @@ TEST(MatrixPencilEstimate, RecoversT2aFrequencyAndDecayWithin1e5InFloat32) {
   // each sample by ≤ 6·10⁻⁸, and β = −fs·ln|z| magnifies a pole-magnitude error by fs/β ≤ 900
   // (5 mm bubble at 48 kHz); averaging over ~1400 windows brings it back far below 10⁻⁵.
   constexpr double kTolerance = 1e-5;
-  WorstError worstFrequency("matrix-pencil f (float32)");
-  WorstError worstDecay("matrix-pencil β (float32)");
-  for (const ToneCase& c : t2aGrid(SampleFormat::Float32)) {
-    const DampedToneEstimate estimate = matrixPencilEstimate(c.samples(), c.sampleRate);
-    worstFrequency.check(estimate.frequency, c.bubble.frequency, c.describe());
-    worstDecay.check(estimate.decayRate, c.bubble.decayRate, c.describe());
-    EXPECT_NEAR(estimate.frequency, c.bubble.frequency, kTolerance * c.bubble.frequency)
-        << c.describe();
-    EXPECT_NEAR(estimate.decayRate, c.bubble.decayRate, kTolerance * c.bubble.decayRate)
-        << c.describe();
-  }
+  expectMatrixPencilOnGrid(SampleFormat::Float32, kTolerance);
 }
 
 TEST(MatrixPencilEstimate, RecoversT2aFrequencyAndDecayWithin0002PercentInPcm16) {
@@ -192,17 +222,7 @@ TEST(MatrixPencilEstimate, RecoversT2aFrequencyAndDecayWithin0002PercentInPcm16)
   // worst case is 0.0013 % (β), set by the ±½-code rounding noise (−96 dB re peak) through the
   // same fs/β magnification.
   constexpr double kTolerance = 0.002e-2;
-  WorstError worstFrequency("matrix-pencil f (pcm16)");
-  WorstError worstDecay("matrix-pencil β (pcm16)");
-  for (const ToneCase& c : t2aGrid(SampleFormat::Pcm16)) {
-    const DampedToneEstimate estimate = matrixPencilEstimate(c.samples(), c.sampleRate);
-    worstFrequency.check(estimate.frequency, c.bubble.frequency, c.describe());
-    worstDecay.check(estimate.decayRate, c.bubble.decayRate, c.describe());
-    EXPECT_NEAR(estimate.frequency, c.bubble.frequency, kTolerance * c.bubble.frequency)
-        << c.describe();
-    EXPECT_NEAR(estimate.decayRate, c.bubble.decayRate, kTolerance * c.bubble.decayRate)
-        << c.describe();
-  }
+  expectMatrixPencilOnGrid(SampleFormat::Pcm16, kTolerance);
 }
 
 TEST(MatrixPencilEstimate, ResolvesAWindowShorterThanFivePeriods) {
@@ -217,12 +237,8 @@ TEST(MatrixPencilEstimate, ResolvesAWindowShorterThanFivePeriods) {
   const std::vector<float> tone =
       dampedTone(bubble.frequency, bubble.decayRate, 48000.0, 0.1, 0.0, SampleFormat::Float32);
   const DampedToneEstimate estimate = matrixPencilEstimate(tone, 48000.0, kShortWindowSamples);
-  WorstError worstFrequency("matrix-pencil f (64 samples)");
-  WorstError worstDecay("matrix-pencil β (64 samples)");
-  worstFrequency.check(estimate.frequency, bubble.frequency, "1 mm, 48 kHz, sin onset");
-  worstDecay.check(estimate.decayRate, bubble.decayRate, "1 mm, 48 kHz, sin onset");
-  EXPECT_NEAR(estimate.frequency, bubble.frequency, kTolerance * bubble.frequency);
-  EXPECT_NEAR(estimate.decayRate, bubble.decayRate, kTolerance * bubble.decayRate);
+  PencilErrors worst("64 samples");
+  worst.expectNear(estimate, bubble, kTolerance, "1 mm, 48 kHz, sin onset");
 }
 
 TEST(MatrixPencilEstimate, RejectsFewerThan16Samples) {
@@ -280,24 +296,14 @@ TEST(HilbertDecayRate, RecoversT2aDecayWithin025PercentInFloat32) {
   // per cycle and a 37-sample fit window, across which the Hilbert transform's tail from the
   // abrupt onset (∝ 1/t) ripples the envelope by ~10 %, too few cycles for it to average out.
   constexpr double kTolerance = 0.25e-2;
-  WorstError worst("Hilbert β (float32)");
-  for (const ToneCase& c : t2aGrid(SampleFormat::Float32)) {
-    const double beta = hilbertDecayRate(c.samples(), c.sampleRate, c.bubble.frequency);
-    worst.check(beta, c.bubble.decayRate, c.describe());
-    EXPECT_NEAR(beta, c.bubble.decayRate, kTolerance * c.bubble.decayRate) << c.describe();
-  }
+  expectHilbertDecayRateOnGrid(SampleFormat::Float32, kTolerance);
 }
 
 TEST(HilbertDecayRate, RecoversT2aDecayWithin025PercentInPcm16) {
   // Claim: as above for 16-bit PCM at −0.9 dBFS. Tolerance 0.25 % (T8: 0.240 % for pcm16 too):
   // the fit stops 30 dB down, ~65 dB above the rounding error, which moves β by ≲ 0.01 %.
   constexpr double kTolerance = 0.25e-2;
-  WorstError worst("Hilbert β (pcm16)");
-  for (const ToneCase& c : t2aGrid(SampleFormat::Pcm16)) {
-    const double beta = hilbertDecayRate(c.samples(), c.sampleRate, c.bubble.frequency);
-    worst.check(beta, c.bubble.decayRate, c.describe());
-    EXPECT_NEAR(beta, c.bubble.decayRate, kTolerance * c.bubble.decayRate) << c.describe();
-  }
+  expectHilbertDecayRateOnGrid(SampleFormat::Pcm16, kTolerance);
 }
 
 TEST(HilbertDecayRate, IsImmuneToTheWrappedOnsetOfSineOnsetLowTones) {
@@ -323,8 +329,7 @@ TEST(HilbertDecayRate, IsImmuneToTheWrappedOnsetOfSineOnsetLowTones) {
     const double naive = naiveHilbertDecayRate(tone, kSampleRate);
     const std::string where =
         std::to_string(p.frequency) + " Hz (naive fit: " + std::to_string(naive) + " /s)";
-    worst.check(robust, p.decayRate, where);
-    EXPECT_NEAR(robust, p.decayRate, kTolerance * p.decayRate) << where;
+    worst.expectNear(robust, p.decayRate, kTolerance, where);
     EXPECT_LT(naive, 0.5 * p.decayRate)
         << "the pitfall tone no longer defeats the naive fit: " << where;
   }
@@ -377,9 +382,8 @@ TEST(FftPeakFrequency, HoldsForAnyOnsetPhase) {
   forEachOnsetPhase(kT2aBubbles, kSampleRates,
                     [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
                         const std::string& where) {
-                      const double f = fftPeakFrequency(tone, sampleRate);
-                      worst.check(f, bubble.frequency, where);
-                      EXPECT_NEAR(f, bubble.frequency, kTolerance * bubble.frequency) << where;
+                      worst.expectNear(fftPeakFrequency(tone, sampleRate), bubble.frequency,
+                                       kTolerance, where);
                     });
 }
 
@@ -389,18 +393,13 @@ TEST(MatrixPencilEstimate, HoldsForAnyOnsetPhase) {
   // the grid test).
   constexpr double kTolerance = 1e-5;
   constexpr std::array<double, 1> kRate{44100.0};
-  WorstError worstFrequency("matrix-pencil f (any onset phase)");
-  WorstError worstDecay("matrix-pencil β (any onset phase)");
-  forEachOnsetPhase(
-      std::span(kT2aBubbles).first(3), kRate,
-      [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
-          const std::string& where) {
-        const DampedToneEstimate e = matrixPencilEstimate(tone, sampleRate);
-        worstFrequency.check(e.frequency, bubble.frequency, where);
-        worstDecay.check(e.decayRate, bubble.decayRate, where);
-        EXPECT_NEAR(e.frequency, bubble.frequency, kTolerance * bubble.frequency) << where;
-        EXPECT_NEAR(e.decayRate, bubble.decayRate, kTolerance * bubble.decayRate) << where;
-      });
+  PencilErrors worst("any onset phase");
+  forEachOnsetPhase(std::span(kT2aBubbles).first(3), kRate,
+                    [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
+                        const std::string& where) {
+                      worst.expectNear(matrixPencilEstimate(tone, sampleRate), bubble, kTolerance,
+                                       where);
+                    });
 }
 
 TEST(HilbertDecayRate, HoldsWithin025PercentForAnyOnsetPhaseUpTo6600Hz) {
@@ -411,9 +410,8 @@ TEST(HilbertDecayRate, HoldsWithin025PercentForAnyOnsetPhaseUpTo6600Hz) {
   forEachOnsetPhase(std::span(kT2aBubbles).subspan(1), kSampleRates,
                     [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
                         const std::string& where) {
-                      const double beta = hilbertDecayRate(tone, sampleRate, bubble.frequency);
-                      worst.check(beta, bubble.decayRate, where);
-                      EXPECT_NEAR(beta, bubble.decayRate, kTolerance * bubble.decayRate) << where;
+                      worst.expectNear(hilbertDecayRate(tone, sampleRate, bubble.frequency),
+                                       bubble.decayRate, kTolerance, where);
                     });
 }
 
@@ -429,9 +427,8 @@ TEST(HilbertDecayRate, StaysWithinTheValidationBudgetForAnyOnsetPhaseAt13kHz) {
   forEachOnsetPhase(std::span(kT2aBubbles).first(1), kSampleRates,
                     [&](const T2aBubble& bubble, double sampleRate, const std::vector<float>& tone,
                         const std::string& where) {
-                      const double beta = hilbertDecayRate(tone, sampleRate, bubble.frequency);
-                      worst.check(beta, bubble.decayRate, where);
-                      EXPECT_NEAR(beta, bubble.decayRate, kTolerance * bubble.decayRate) << where;
+                      worst.expectNear(hilbertDecayRate(tone, sampleRate, bubble.frequency),
+                                       bubble.decayRate, kTolerance, where);
                     });
 }
 
@@ -495,8 +492,7 @@ TEST(ZeroCrossingFrequencies, TracksALinearChirpWithin02PercentPerPeriod) {
     for (const FrequencyAtTime& m : measured) {
       const double expected = c.startFrequency + c.sweepRate * m.time;
       const std::string where = c.name + " at t = " + std::to_string(m.time) + " s";
-      worst.check(m.frequency, expected, where);
-      EXPECT_NEAR(m.frequency, expected, kTolerance * expected) << where;
+      worst.expectNear(m.frequency, expected, kTolerance, where);
     }
   }
 }
