@@ -92,6 +92,26 @@ void expectDitheredQuantisation(const AudioBuffer& written, const AudioBuffer& r
   EXPECT_NEAR(meanSquare, 0.25, 0.04 * 0.25) << "mean-square error in LSB²";
 }
 
+/// What a round trip through a file shows: the test signal written (peak 0.9, below full scale),
+/// the format libsndfile finds in the file (major | subtype), and the samples read back.
+struct RoundTrip {
+  AudioBuffer written;
+  int format = 0;
+  AudioBuffer read;
+};
+
+/// Writes testSignal(0.9) as `fileName` in a fresh folder with `settings` and reads it back.
+RoundTrip roundTrip(const std::string& fileName, const AudioWriteSettings& settings) {
+  TempFolder folder;
+  const fs::path path = folder.path() / fileName;
+  RoundTrip trip;
+  trip.written = testSignal(0.9);
+  writeAudio(path, trip.written, settings);
+  trip.format = storedFormat(path);
+  trip.read = readAudio(path);
+  return trip;
+}
+
 TEST(AudioFile, FloatWavRoundTripIsBitExact) {
   // Claim: 32-bit float WAV stores the samples as given (pascals, beyond ±1 too), so reading
   // gives back the same floats exactly; tolerance zero.
@@ -130,52 +150,41 @@ TEST(AudioFile, TheSameAudioWrittenTwiceGivesTheSameBytes) {
   EXPECT_TRUE(a == bytes(folder.path() / "b.wav"))
       << "the two files differ";  // not printed: binary
 }
+
 TEST(AudioFile, Pcm16RoundTripIsWithinQuantisationAndDither) {
-  TempFolder folder;
-  const fs::path path = folder.path() / "render.wav";
-  const AudioBuffer audio = testSignal(0.9);
   AudioWriteSettings settings;
   settings.bitsPerSample = 16;
-  writeAudio(path, audio, settings);
-  EXPECT_EQ(storedFormat(path), SF_FORMAT_WAV | SF_FORMAT_PCM_16);
-  expectDitheredQuantisation(audio, readAudio(path), 16);
+  const RoundTrip trip = roundTrip("render.wav", settings);
+  EXPECT_EQ(trip.format, SF_FORMAT_WAV | SF_FORMAT_PCM_16);
+  expectDitheredQuantisation(trip.written, trip.read, 16);
 }
 
 TEST(AudioFile, Pcm24RoundTripIsWithinQuantisationAndDither) {
-  TempFolder folder;
-  const fs::path path = folder.path() / "render.wav";
-  const AudioBuffer audio = testSignal(0.9);
   AudioWriteSettings settings;
   settings.bitsPerSample = 24;
-  writeAudio(path, audio, settings);
-  EXPECT_EQ(storedFormat(path), SF_FORMAT_WAV | SF_FORMAT_PCM_24);
-  expectDitheredQuantisation(audio, readAudio(path), 24);
+  const RoundTrip trip = roundTrip("render.wav", settings);
+  EXPECT_EQ(trip.format, SF_FORMAT_WAV | SF_FORMAT_PCM_24);
+  expectDitheredQuantisation(trip.written, trip.read, 24);
 }
 
 TEST(AudioFile, FlacRoundTripIsWithin24BitPrecision) {
   // FLAC has no float samples: the default 32 bits become 24-bit PCM (docs/audio.md).
-  TempFolder folder;
-  const fs::path path = folder.path() / "render.flac";
-  const AudioBuffer audio = testSignal(0.9);
+  const std::string fileName = "render.flac";
   AudioWriteSettings settings;
-  settings.format = audioFormatFromPath(path);
-  writeAudio(path, audio, settings);
-  EXPECT_EQ(storedFormat(path), SF_FORMAT_FLAC | SF_FORMAT_PCM_24);
-  const AudioBuffer read = readAudio(path);
-  EXPECT_EQ(read.sampleRate, 48000.0);
-  expectDitheredQuantisation(audio, read, 24);
+  settings.format = audioFormatFromPath(fileName);
+  const RoundTrip trip = roundTrip(fileName, settings);
+  EXPECT_EQ(trip.format, SF_FORMAT_FLAC | SF_FORMAT_PCM_24);
+  EXPECT_EQ(trip.read.sampleRate, 48000.0);
+  expectDitheredQuantisation(trip.written, trip.read, 24);
 }
 
 TEST(AudioFile, Flac16IsWrittenAs16BitPcm) {
-  TempFolder folder;
-  const fs::path path = folder.path() / "render.flac";
-  const AudioBuffer audio = testSignal(0.9);
   AudioWriteSettings settings;
   settings.format = AudioFormat::Flac;
   settings.bitsPerSample = 16;
-  writeAudio(path, audio, settings);
-  EXPECT_EQ(storedFormat(path), SF_FORMAT_FLAC | SF_FORMAT_PCM_16);
-  expectDitheredQuantisation(audio, readAudio(path), 16);
+  const RoundTrip trip = roundTrip("render.flac", settings);
+  EXPECT_EQ(trip.format, SF_FORMAT_FLAC | SF_FORMAT_PCM_16);
+  expectDitheredQuantisation(trip.written, trip.read, 16);
 }
 
 TEST(AudioFile, NormalisationPutsThePeakAtTheRequestedLevel) {
