@@ -10,15 +10,12 @@
 #include <numbers>
 
 #include "acoustics/minnaert.h"
+#include "support/printed_tolerance.h"
 
 namespace fluidsound::acoustics {
 namespace {
 
-/// Tolerance for a printed table value: half a unit of its last printed digit (the table's
-/// rounding), or 2e-5 relative, whichever is larger.
-double printedTolerance(double value, double lastDigit) {
-  return std::max(0.5 * lastDigit, 2e-5 * std::abs(value));
-}
+using test::printedTolerance;
 
 /// Default model at one radius: T1 "σ, κ=γ", T2a δ_total and β, T7 "jet: p(1 m)"
 /// [shared physics.md §3, §4, §7.3].
@@ -67,6 +64,17 @@ constexpr double kPhiDeltaDigit = 1e-5;
 /// T7's jet column is a formula identity at 0.1 % (shared physics.md §7.3, §9 row 12).
 constexpr double kJetRelativeTolerance = 1e-3;
 
+/// Expects f₀ = ω₀/2π, δ and β of `constants` at a table row's printed values (f₀ printed to
+/// 0.1 Hz, δ to `deltaDigit`, β to the row's decayDigit), each within printedTolerance.
+template <typename Row>
+void expectPrintedFrequencyAndDamping(const OscillatorConstants& constants, const Row& row,
+                                      double deltaDigit) {
+  EXPECT_NEAR(constants.angularFrequency / (2.0 * std::numbers::pi), row.frequency,
+              printedTolerance(row.frequency, kFrequencyDigit));
+  EXPECT_NEAR(constants.dampingConstant, row.total, printedTolerance(row.total, deltaDigit));
+  EXPECT_NEAR(constants.decayRate, row.decayRate, printedTolerance(row.decayRate, row.decayDigit));
+}
+
 TEST(BubbleOscillator, DefaultModelCombinesTablesT1T2aAndT7) {
   const LiquidProperties liquid;
   const OscillatorModel model;
@@ -77,11 +85,7 @@ TEST(BubbleOscillator, DefaultModelCombinesTablesT1T2aAndT7) {
     // Claim: ω₀ from the adiabatic + σ model, δ and β = ω₀δ/2 from Devin damping, amplitude from
     // the jet forcing (the defaults of oscillator_model.h). References: T1 "σ, κ=γ", T2a δ_total
     // and β, T7 "jet: p(1 m)". Tolerance: printed precision or 2e-5 relative; 0.1 % for the jet.
-    EXPECT_NEAR(constants.angularFrequency / (2.0 * std::numbers::pi), row.frequency,
-                printedTolerance(row.frequency, kFrequencyDigit));
-    EXPECT_NEAR(constants.dampingConstant, row.total, printedTolerance(row.total, kDeltaDigit));
-    EXPECT_NEAR(constants.decayRate, row.decayRate,
-                printedTolerance(row.decayRate, row.decayDigit));
+    expectPrintedFrequencyAndDamping(constants, row, kDeltaDigit);
     EXPECT_NEAR(constants.amplitude, row.jetPressure, kJetRelativeTolerance * row.jetPressure);
   }
 }
@@ -97,11 +101,7 @@ TEST(BubbleOscillator, ThermalModelMatchesTablesT1AndT2bPhiColumns) {
     // Claim: with κ_eff the frequency is T1's "σ, κ_eff" and the damping uses p_g0|Im Φ|/(ρR²ω₀²)
     // at that frequency. References: T1, T2b "δ_total Φ" and "β Φ". Tolerance: printed precision
     // or 2e-5 relative.
-    EXPECT_NEAR(constants.angularFrequency / (2.0 * std::numbers::pi), row.frequency,
-                printedTolerance(row.frequency, kFrequencyDigit));
-    EXPECT_NEAR(constants.dampingConstant, row.total, printedTolerance(row.total, kPhiDeltaDigit));
-    EXPECT_NEAR(constants.decayRate, row.decayRate,
-                printedTolerance(row.decayRate, row.decayDigit));
+    expectPrintedFrequencyAndDamping(constants, row, kPhiDeltaDigit);
   }
 }
 

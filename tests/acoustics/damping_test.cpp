@@ -11,16 +11,12 @@
 #include <numbers>
 
 #include "acoustics/minnaert.h"
+#include "support/printed_tolerance.h"
 
 namespace fluidsound::acoustics {
 namespace {
 
-/// Tolerance for a printed table value: half a unit of its last printed digit (the rounding of the
-/// table), or 2e-5 relative, whichever is larger (double-precision evaluations of the same formula
-/// agree far better; the floor covers the table's rounding where the last digit is fine).
-double printedTolerance(double value, double lastDigit) {
-  return std::max(0.5 * lastDigit, 2e-5 * std::abs(value));
-}
+using test::printedTolerance;
 
 /// One row of table T2a: Devin damping at f₀ = adiabatic + σ (default model) [shared physics.md
 /// §4].
@@ -86,6 +82,21 @@ constexpr double kT60DecayNepers = 3.0 * std::numbers::ln10;
 constexpr double kMinus90DecayNepers = 4.5 * std::numbers::ln10;
 constexpr double kMillisecondsPerSecond = 1e3;
 
+/// A bubble as the model sets it at the ambient pressure: its natural ω₀, its gas pressure p_g0
+/// (p₀ + 2σ/R) and its damping at ω₀.
+struct BubbleAtNaturalFrequency {
+  double omega;     ///< ω₀ [rad/s]
+  double pressure;  ///< p_g0 [Pa]
+  Damping damping;
+};
+
+BubbleAtNaturalFrequency atNaturalFrequency(double radius, const LiquidProperties& liquid,
+                                            const OscillatorModel& model) {
+  const double omega = naturalAngularFrequency(radius, liquid.ambientPressure, liquid, model);
+  const double pressure = gasPressure(radius, liquid.ambientPressure, liquid, model);
+  return {omega, pressure, bubbleDamping(radius, omega, pressure, liquid, model)};
+}
+
 /// ω [rad/s] at which X = R√(2ω/D_g) takes a chosen value.
 double omegaForDevinArgument(double x, double radius, double pressure, const GasProperties& gas) {
   return (x / radius) * (x / radius) * gasThermalDiffusivity(pressure, gas) / 2.0;
@@ -114,9 +125,7 @@ TEST(Damping, DevinTotalQualityDecayRateAndDecayTimesMatchTableT2a) {
   const OscillatorModel model;  // default: adiabatic + σ, Devin damping
   for (const T2aRow& row : kTableT2a) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
-    const double omega = naturalAngularFrequency(row.radius, liquid.ambientPressure, liquid, model);
-    const double pressure = gasPressure(row.radius, liquid.ambientPressure, liquid, model);
-    const Damping damping = bubbleDamping(row.radius, omega, pressure, liquid, model);
+    const Damping damping = atNaturalFrequency(row.radius, liquid, model).damping;
     // Claim: δ = δ_rad + δ_vis + δ_th, Q = 1/δ, β = ω₀δ/2 (Devin 1959), T60 = 3 ln10/β,
     // t₋₉₀dB = 4.5 ln10/β. Reference: T2a. Tolerance: printed precision of each column or 2e-5
     // relative.
@@ -137,9 +146,7 @@ TEST(Damping, ThermalPolytropicModelMatchesTableT2bPhiColumns) {
   model.polytropic = PolytropicModel::Thermal;
   for (const T2bRow& row : kTableT2b) {
     SCOPED_TRACE(testing::Message() << "R = " << row.radius << " m");
-    const double omega = naturalAngularFrequency(row.radius, liquid.ambientPressure, liquid, model);
-    const double pressure = gasPressure(row.radius, liquid.ambientPressure, liquid, model);
-    const Damping damping = bubbleDamping(row.radius, omega, pressure, liquid, model);
+    const Damping damping = atNaturalFrequency(row.radius, liquid, model).damping;
     // Claim: with κ_eff, δ_th = p_g0|Im Φ(ω₀)|/(ρR²ω₀²) at the κ_eff ω₀, plus δ_rad and δ_vis
     // there (Prosperetti 1991). Reference: T2b "δ_total Φ", "β Φ". Tolerance: printed precision
     // (5e-6 for δ; 0.05 or 0.005 1/s for β) or 2e-5 relative.
@@ -162,9 +169,7 @@ TEST(Damping, VanDenDoelDecayRateMatchesTableT2b) {
                 printedTolerance(row.vanDenDoel, row.decayDigit));
     // Claim: the VanDenDoel model sets β = d and δ = 2d/ω₀ (damping.h). Reference: the same
     // column. Tolerance: 1e-12 relative, float rounding only.
-    const double omega = naturalAngularFrequency(row.radius, liquid.ambientPressure, liquid, model);
-    const double pressure = gasPressure(row.radius, liquid.ambientPressure, liquid, model);
-    const Damping damping = bubbleDamping(row.radius, omega, pressure, liquid, model);
+    const auto [omega, pressure, damping] = atNaturalFrequency(row.radius, liquid, model);
     const double d = vanDenDoelDecayRate(row.radius);
     EXPECT_NEAR(damping.decayRate, d, 1e-12 * d);
     EXPECT_NEAR(damping.dampingConstant, 2.0 * d / omega, 1e-12 * d / omega);
@@ -238,10 +243,7 @@ TEST(Damping, ExtremeRadiiGiveFinitePositiveDamping) {
           model.damping = dampingModel;
           model.polytropic = polytropic;
           model.vapour = vapour;
-          const double omega =
-              naturalAngularFrequency(radius, liquid.ambientPressure, liquid, model);
-          const double pressure = gasPressure(radius, liquid.ambientPressure, liquid, model);
-          const Damping damping = bubbleDamping(radius, omega, pressure, liquid, model);
+          const auto [omega, pressure, damping] = atNaturalFrequency(radius, liquid, model);
           EXPECT_TRUE(std::isfinite(damping.dampingConstant));
           EXPECT_TRUE(std::isfinite(damping.decayRate));
           EXPECT_GT(damping.dampingConstant, 0.0);

@@ -11,15 +11,12 @@
 #include <numbers>
 
 #include "acoustics/minnaert.h"
+#include "support/printed_tolerance.h"
 
 namespace fluidsound::acoustics {
 namespace {
 
-/// Tolerance for a printed table value: half a unit of its last printed digit (the table's
-/// rounding), or 2e-5 relative, whichever is larger.
-double printedTolerance(double value, double lastDigit) {
-  return std::max(0.5 * lastDigit, 2e-5 * std::abs(value));
-}
+using test::printedTolerance;
 
 /// One row of table T7 [shared physics.md §7.3].
 struct T7Row {

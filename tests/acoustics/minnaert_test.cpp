@@ -11,16 +11,12 @@
 #include <stdexcept>
 
 #include "acoustics/damping.h"
+#include "support/printed_tolerance.h"
 
 namespace fluidsound::acoustics {
 namespace {
 
-/// Tolerance for a printed table value: half a unit of its last printed digit (the rounding of the
-/// table), or 2e-5 relative (double-precision evaluations of the same formula agree far better; the
-/// floor only covers the table's own rounding when the last digit is coarse), whichever is larger.
-double printedTolerance(double value, double lastDigit) {
-  return std::max(0.5 * lastDigit, 2e-5 * std::abs(value));
-}
+using test::printedTolerance;
 
 /// One row of table T1 (Hz, except κ_eff) [shared physics.md §3, T1].
 struct T1Row {
