@@ -12,6 +12,7 @@
 #include "acoustics/damped_sine_spectrum.h"
 #include "acoustics/depth_shift.h"
 #include "acoustics/power_spectrum.h"
+#include "support/deep_bubble.h"
 
 namespace fluidsound::acoustics {
 namespace {
@@ -25,14 +26,8 @@ SynthesisSettings defaultSettings() {
   return s;
 }
 
-OscillatorConstants deepConstants(double radius, const SynthesisSettings& s) {
-  return bubbleOscillator(radius, s.liquid.ambientPressure, s.liquid, s.model);
-}
-
-double dampedFrequency(const OscillatorConstants& c) {
-  return std::sqrt(c.angularFrequency * c.angularFrequency - c.decayRate * c.decayRate) /
-         (2.0 * std::numbers::pi);
-}
+using test::dampedFrequency;
+using test::deepConstants;
 
 /// A bubble held at constant depth and transfer (one track sample per frame over 0.2 s).
 BubbleTrack steadyBubble(double radius, double birth, double depth, std::vector<double> transfer) {

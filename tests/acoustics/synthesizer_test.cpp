@@ -16,6 +16,7 @@
 #include "acoustics/tone_analysis.h"
 #include "acoustics/track_interpolation.h"
 #include "acoustics/validation.h"
+#include "support/deep_bubble.h"
 
 namespace fluidsound::acoustics {
 namespace {
@@ -28,14 +29,8 @@ SynthesisSettings defaultSettings() {
   return s;
 }
 
-OscillatorConstants deepConstants(double radius, const SynthesisSettings& s) {
-  return bubbleOscillator(radius, s.liquid.ambientPressure, s.liquid, s.model);
-}
-
-double dampedFrequency(const OscillatorConstants& c) {
-  return std::sqrt(c.angularFrequency * c.angularFrequency - c.decayRate * c.decayRate) /
-         (2.0 * std::numbers::pi);
-}
+using test::dampedFrequency;
+using test::deepConstants;
 
 double peak(const std::vector<float>& x) {
   double m = 0.0;
