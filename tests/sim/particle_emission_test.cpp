@@ -9,18 +9,12 @@
 
 #include "sim/fluid_solver.h"
 #include "sim/liquid_surface.h"
+#include "support/cube_grid.h"
 
 namespace fluidsound::sim {
 namespace {
 
 constexpr double kCell = 0.01;  // [m]
-
-GridGeometry grid20() {
-  GridGeometry g;
-  g.cells = {20, 20, 20};
-  g.cellSize = kCell;
-  return g;
-}
 
 Emitter downwardNozzle() {
   Emitter e;
@@ -33,27 +27,40 @@ Emitter downwardNozzle() {
   return e;
 }
 
+/// The downward nozzle pouring into an empty 20-cell grid (no solid: node distances +1 m), 8
+/// particles per cell, scene seed 1, and what it has emitted so far.
+struct NozzleIntoEmptyGrid {
+  GridGeometry grid = test::cubeGrid(20, kCell);
+  Array3f noSolid{grid.nodeCount(), 1.0f};
+  Emitter nozzle = downwardNozzle();
+  EmitterState state;
+  Particles particles;
+
+  /// Emits over [t0, t1]; returns the particles appended.
+  std::size_t emit(double t0, double t1) {
+    return emitParticles(particles, nozzle, state, t0, t1, grid, 8, noSolid, 1, 0);
+  }
+};
+
 // Claim: the particles emitted carry the nozzle's volume flux π r² v: over many substeps of
 // uneven length, count × h³/8 equals π r² v × (active time) to within one particle's volume.
 // Reference: the flux formula (issue 5: "volume flux = area × speed").
 // Tolerance: one particle (the running fraction carries over between substeps).
 TEST(ParticleEmission, CountMatchesTheVolumeFlux) {
-  const GridGeometry grid = grid20();
-  const Array3f noSolid(grid.nodeCount(), 1.0f);
-  const Emitter nozzle = downwardNozzle();
-  EmitterState state;
-  Particles particles;
+  NozzleIntoEmptyGrid pour;
+  const Emitter& nozzle = pour.nozzle;
+  const Particles& particles = pour.particles;
   double t = 0.0;
   for (int step = 0; t < 0.8; ++step) {
     const double dt = 0.002 + 0.003 * ((step * 7) % 5) / 4.0;  // 2 … 5 ms, uneven
-    emitParticles(particles, nozzle, state, t, t + dt, grid, 8, noSolid, 1, 0);
+    pour.emit(t, t + dt);
     t += dt;
   }
   const double particleVolume = kCell * kCell * kCell / 8.0;
   const double expected = std::numbers::pi * nozzle.radius * nozzle.radius * nozzle.speed * 0.5;
   EXPECT_NEAR(emittedVolume(nozzle, 0.0, 0.8), expected, 1e-15);
   EXPECT_NEAR(static_cast<double>(particles.size()) * particleVolume, expected, particleVolume);
-  EXPECT_EQ(state.emitted, particles.size());
+  EXPECT_EQ(pour.state.emitted, particles.size());
 }
 
 // Claim: a substep's particles lie in the slab of liquid that left the disk during it — within
@@ -61,15 +68,12 @@ TEST(ParticleEmission, CountMatchesTheVolumeFlux) {
 // appear before `start` or after `end`.
 // Reference: the nozzle's geometry. Tolerance: float rounding of positions (1e-6 m).
 TEST(ParticleEmission, ParticlesFillTheSweptCylinderWithTheNozzleVelocity) {
-  const GridGeometry grid = grid20();
-  const Array3f noSolid(grid.nodeCount(), 1.0f);
-  const Emitter nozzle = downwardNozzle();
-  EmitterState state;
-  Particles particles;
-  EXPECT_EQ(emitParticles(particles, nozzle, state, 0.0, 0.1, grid, 8, noSolid, 1, 0), 0u)
-      << "before start";
+  NozzleIntoEmptyGrid pour;
+  const Emitter& nozzle = pour.nozzle;
+  const Particles& particles = pour.particles;
+  EXPECT_EQ(pour.emit(0.0, 0.1), 0u) << "before start";
   const double dt = 0.004;
-  ASSERT_GT(emitParticles(particles, nozzle, state, 0.2, 0.2 + dt, grid, 8, noSolid, 1, 0), 20u);
+  ASSERT_GT(pour.emit(0.2, 0.2 + dt), 20u);
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const Vec3f& x = particles.position[p];
     const double axial = nozzle.center[1] - x[1];
@@ -81,8 +85,7 @@ TEST(ParticleEmission, ParticlesFillTheSweptCylinderWithTheNozzleVelocity) {
     EXPECT_FLOAT_EQ(particles.velocity[p][0], 0.0f);
   }
   const std::size_t before = particles.size();
-  EXPECT_EQ(emitParticles(particles, nozzle, state, 0.6, 0.7, grid, 8, noSolid, 1, 0), 0u)
-      << "after end";
+  EXPECT_EQ(pour.emit(0.6, 0.7), 0u) << "after end";
   EXPECT_EQ(particles.size(), before);
 }
 

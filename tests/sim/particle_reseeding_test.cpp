@@ -6,17 +6,12 @@
 
 #include <map>
 
+#include "support/cube_grid.h"
+
 namespace fluidsound::sim {
 namespace {
 
 constexpr double kCell = 0.01;  // [m]
-
-GridGeometry grid4() {
-  GridGeometry g;
-  g.cells = {4, 4, 4};
-  g.cellSize = kCell;
-  return g;
-}
 
 /// `perCell` particles at fixed spots in every cell, except the cells listed in `counts`.
 Particles fill(const GridGeometry& g, int perCell, const std::map<int, int>& counts = {}) {
@@ -45,7 +40,7 @@ std::map<int, int> countPerCell(const Particles& p, const GridGeometry& g) {
 }
 
 struct Fixture {
-  GridGeometry grid = grid4();
+  GridGeometry grid = test::cubeGrid(4, kCell);
   Array3f liquidPhi{grid.cells, float(-kCell)};  // all liquid, a cell deep
   Array3f solidNodes{grid.nodeCount(), 1.0f};    // no solid
   SolidMeshRays noMeshes;
