@@ -209,17 +209,23 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   }
   // Per row of cells (j, k), which phases it holds (bit 1 << phase): rows of one phase whose
   // neighbour rows hold no other phase have no surface cell, and are passed over below.
+  // The field starts at ±band (the band of each cell's side), written in the same pass: step 3
+  // overwrites the cells the front reaches.
+  if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
+  const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by liquid
   rowPhases_.resize(static_cast<std::size_t>(nj) * nk);
   for (std::size_t row = 0; row < rowPhases_.size(); ++row) {
     const float* const value = phi.data() + row * sj;
     const std::uint8_t* const solid = solidCells_.data() + row * sj;
     std::uint8_t* const out = phase_.data() + row * sj;
+    float* const distance = field_.data() + row * sj;
     // Without branches (solid is 0 or 1), so that the loop vectorises.
     std::uint8_t anyAir = 0, anyLiquid = 0, anySolid = 0;
     for (int i = 0; i < ni; ++i) {
       const std::uint8_t inSolid = solid[i];
       const std::uint8_t liquid = static_cast<std::uint8_t>(value[i] < 0.0f) & (inSolid ^ 1u);
       out[i] = static_cast<std::uint8_t>(inSolid * kSolid + liquid * kLiquid);
+      distance[i] = beyond[(inSolid | liquid) & 1u];  // not air: the liquid side's band
       anySolid |= inSolid;
       anyLiquid |= liquid;
       anyAir |= (inSolid | liquid) ^ 1u;
@@ -386,17 +392,9 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
       front.push({e2[n], reached, p});
     }
   }
-  // 3. The sign of the phase; cells beyond the band hold ±band (the band of their side).
-  //    Cells no point reached keep their first limit, beyond their side's band: ±band for all
-  //    cells first, then the cells the front reached.
-  if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
+  // 3. The sign of the phase: the cells the front reached (the others hold ±band since the phase
+  //    pass, as cells no point reached keep their first limit, beyond their side's band).
   float* const out = field_.data();
-  const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by isLiquid
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kCellsPerTask),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t at = r.begin(); at < r.end(); ++at)
-                        out[at] = beyond[phase_[at] != kAir];
-                    });
   for (const Cell& c : touched_) {
     const std::size_t at = c.grid;
     const double side = isLiquid(at) ? band : airBand;
