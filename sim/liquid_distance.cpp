@@ -30,11 +30,13 @@ constexpr int kBucketCells = 4;
 constexpr double kFieldMarginCells = 2.0;
 /// Key width of one bucket of the propagation front [cells²]: a few entries per bucket.
 constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
-/// Cells per task of the whole-grid passes, about 60 µs of work: a smaller grid (the glass pour's
-/// 41 000 cells) is one task on the calling thread. Spread over two threads in tasks of 8 192 cells
-/// it took longer (rebuilds of its saved fields, as BM_SurfaceDistanceRebuild: about 385 µs against
-/// 360 µs), the wake-up of the other thread costing more than it saved.
-constexpr std::size_t kCellsPerTask = std::size_t{1} << 16;
+/// Cells per task of the whole-grid passes. Alone (BM_SurfaceDistanceRebuild, the other thread
+/// asleep) tasks this small were slower than one task for the glass pour's 41 000 cells (about
+/// 385 against 360 µs per rebuild): waking the other thread cost more than it saved. Inside the
+/// bubble step the other thread is waiting for the rebuild and takes tasks at once: seven
+/// alternating glass pour runs, one task against 8 192-cell tasks (the row phase pass too), gave
+/// a bubble model of 0.502 s against 0.486 s on average, 6 of 7 pairs faster.
+constexpr std::size_t kCellsPerTask = std::size_t{1} << 13;
 /// `limit` of a surface cell: below every squared distance, so no propagated point replaces its
 /// own.
 constexpr double kNeverReplaced = -1.0;
@@ -214,25 +216,30 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
   const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by liquid
   rowPhases_.resize(static_cast<std::size_t>(nj) * nk);
-  for (std::size_t row = 0; row < rowPhases_.size(); ++row) {
-    const float* const value = phi.data() + row * sj;
-    const std::uint8_t* const solid = solidCells_.data() + row * sj;
-    std::uint8_t* const out = phase_.data() + row * sj;
-    float* const distance = field_.data() + row * sj;
-    // Without branches (solid is 0 or 1), so that the loop vectorises.
-    std::uint8_t anyAir = 0, anyLiquid = 0, anySolid = 0;
-    for (int i = 0; i < ni; ++i) {
-      const std::uint8_t inSolid = solid[i];
-      const std::uint8_t liquid = static_cast<std::uint8_t>(value[i] < 0.0f) & (inSolid ^ 1u);
-      out[i] = static_cast<std::uint8_t>(inSolid * kSolid + liquid * kLiquid);
-      distance[i] = beyond[(inSolid | liquid) & 1u];  // not air: the liquid side's band
-      anySolid |= inSolid;
-      anyLiquid |= liquid;
-      anyAir |= (inSolid | liquid) ^ 1u;
-    }
-    rowPhases_[row] =
-        static_cast<std::uint8_t>(anyAir << kAir | anyLiquid << kLiquid | anySolid << kSolid);
-  }
+  const std::size_t rowsPerTask = std::max<std::size_t>(1, kCellsPerTask / sj);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, rowPhases_.size(), rowsPerTask),
+      [&](const tbb::blocked_range<std::size_t>& rows) {
+        for (std::size_t row = rows.begin(); row < rows.end(); ++row) {
+          const float* const value = phi.data() + row * sj;
+          const std::uint8_t* const solid = solidCells_.data() + row * sj;
+          std::uint8_t* const out = phase_.data() + row * sj;
+          float* const distance = field_.data() + row * sj;
+          // Without branches (solid is 0 or 1), so that the loop vectorises.
+          std::uint8_t anyAir = 0, anyLiquid = 0, anySolid = 0;
+          for (int i = 0; i < ni; ++i) {
+            const std::uint8_t inSolid = solid[i];
+            const std::uint8_t liquid = static_cast<std::uint8_t>(value[i] < 0.0f) & (inSolid ^ 1u);
+            out[i] = static_cast<std::uint8_t>(inSolid * kSolid + liquid * kLiquid);
+            distance[i] = beyond[(inSolid | liquid) & 1u];  // not air: the liquid side's band
+            anySolid |= inSolid;
+            anyLiquid |= liquid;
+            anyAir |= (inSolid | liquid) ^ 1u;
+          }
+          rowPhases_[row] =
+              static_cast<std::uint8_t>(anyAir << kAir | anyLiquid << kLiquid | anySolid << kSolid);
+        }
+      });
   const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
   // Cells within the band take their first point when it is within their side's band.
   const double band2[2] = {airBand * airBand, band * band};  // by isLiquid
