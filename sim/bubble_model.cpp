@@ -199,8 +199,10 @@ BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, dou
   // the task runs at wait(). Either way each result is computed as alone.
   tbb::task_group distance;
   distance.run([&] { rebuildDistance(solverState); });
-  // (1) Move the bubbles made in earlier steps.
+  // (1) Move the bubbles made in earlier steps. Only they read the last step's grid velocity, so
+  //     this step's is kept for the next one now, while the distance is still being rebuilt.
   moveLiveBubbles(solverState, dt);
+  previousVelocity_ = solverState.velocity;
   const std::size_t cells = solverState.liquidDistance.values().size();
   if (entrainmentUsesVelocityRange(settings_) &&
       solverState.particlePositions.size() * kCellsPerParticleForRange >= cells)
@@ -225,7 +227,6 @@ BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, dou
 
   tags_ = std::move(entrainment.tags);
   seedCount_ = report.seeds;
-  previousVelocity_ = liquid.velocity;
   stateTime_ = t + dt;
   ++steps_;
   report.alive = live_.size();
