@@ -1,14 +1,14 @@
 // sim/bubble_model.cpp — see bubble_model.h.
 #include "sim/bubble_model.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_group.h>
 
 #include "sim/cell_interpolation.h"
 #include "sim/particle_seeding.h"
@@ -46,7 +46,9 @@ constexpr std::size_t kBubblesPerTask = 32;
 /// Live bubbles per task of their end test: three interpolations each, tens of nanoseconds.
 constexpr std::size_t kBubbleEndsPerTask = 512;
 
-bool sameTime(double a, double b) { return std::abs(a - b) <= kTimeTolerance * std::max(1.0, std::abs(a)); }
+bool sameTime(double a, double b) {
+  return std::abs(a - b) <= kTimeTolerance * std::max(1.0, std::abs(a));
+}
 
 bool insideGrid(const GridGeometry& grid, const Vec3& x) {
   const Vec3 g = grid.gridFromWorld(x);
@@ -64,7 +66,8 @@ bool sameLayout(const MacVelocity& a, const MacVelocity& b) {
 [[noreturn]] void rejectTime(const char* what, double got, double expected) {
   std::ostringstream message;
   message.precision(17);
-  message << what << " must be the end of the previous step (" << expected << " s), got " << got << " s";
+  message << what << " must be the end of the previous step (" << expected << " s), got " << got
+          << " s";
   throw std::invalid_argument(message.str());
 }
 
@@ -102,25 +105,30 @@ void BubbleModel::moveLiveBubbles(const LiquidState& solverState, double dt) {
   // same result. A drag solve takes about a microsecond: tasks of kBubblesPerTask.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, live_.size(), kBubblesPerTask),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i < r.end(); ++i) {
-      LiveBubble& b = live_[i];
-      const double radius = histories_[b.history].radius;
-      const Vec3 x = b.motion.position;
-      LiquidAtBubble at;
-      at.velocity = interpolateVelocity(solverState.velocity, grid, x);
-      if (hasPrevious) {
-        // Du/Dt ≈ (u(x, t + dt) − u(x − u·dt, t))/dt: the change along the liquid's path
-        // (semi-Lagrangian), which includes the advective part u·∇u.
-        const Vec3 back{x[0] - dt * at.velocity[0], x[1] - dt * at.velocity[1], x[2] - dt * at.velocity[2]};
-        const Vec3 before = interpolateVelocity(previousVelocity_, grid, back);
-        for (int a = 0; a < 3; ++a) at.acceleration[a] = (at.velocity[a] - before[a]) / dt;
-      }
-      b.motion = advanceBubble(b.motion, radius, at, gravity_, dt, settings_.rise);
-    }
-  });
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        LiveBubble& b = live_[i];
+                        const double radius = histories_[b.history].radius;
+                        const Vec3 x = b.motion.position;
+                        LiquidAtBubble at;
+                        at.velocity = interpolateVelocity(solverState.velocity, grid, x);
+                        if (hasPrevious) {
+                          // Du/Dt ≈ (u(x, t + dt) − u(x − u·dt, t))/dt: the change along the
+                          // liquid's path (semi-Lagrangian), which includes the advective part
+                          // u·∇u.
+                          const Vec3 back{x[0] - dt * at.velocity[0], x[1] - dt * at.velocity[1],
+                                          x[2] - dt * at.velocity[2]};
+                          const Vec3 before = interpolateVelocity(previousVelocity_, grid, back);
+                          for (int a = 0; a < 3; ++a)
+                            at.acceleration[a] = (at.velocity[a] - before[a]) / dt;
+                        }
+                        b.motion =
+                            advanceBubble(b.motion, radius, at, gravity_, dt, settings_.rise);
+                      }
+                    });
 }
 
-void BubbleModel::endLiveBubbles(const LiquidState& liquid, double t, double dt, BubbleStepReport& report) {
+void BubbleModel::endLiveBubbles(const LiquidState& liquid, double t, double dt,
+                                 BubbleStepReport& report) {
   const GridGeometry& grid = liquid.grid;
   std::vector<Fate>& fate = fates_;
   std::vector<double>& deathTime = deathTimes_;
@@ -128,40 +136,49 @@ void BubbleModel::endLiveBubbles(const LiquidState& liquid, double t, double dt,
   deathTime.assign(live_.size(), 0.0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, live_.size(), kBubbleEndsPerTask),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i < r.end(); ++i) {
-      LiveBubble& b = live_[i];
-      const double radius = histories_[b.history].radius;
-      const Vec3& y = b.motion.position;
-      const double before = b.depth;
-      if (!insideGrid(grid, y)) {
-        fate[i] = Fate::Outside;
-        deathTime[i] = t + dt;
-        continue;
-      }
-      if (interpolateNodes(liquid.solidNodeDistance, grid, y) < 0.0f) {
-        fate[i] = Fate::Solid;
-        deathTime[i] = t + dt;
-        continue;
-      }
-      b.depth = -interpolateCellCentres(liquid.liquidDistance, grid, y);
-      if (b.depth <= radius) {
-        // The depth crossed the radius during the step: linear in time between the two depths.
-        const double fraction =
-            before > b.depth ? std::clamp((before - radius) / (before - b.depth), 0.0, 1.0) : 1.0;
-        fate[i] = Fate::Surface;
-        deathTime[i] = t + dt * fraction;
-      }
-    }
-  });
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        LiveBubble& b = live_[i];
+                        const double radius = histories_[b.history].radius;
+                        const Vec3& y = b.motion.position;
+                        const double before = b.depth;
+                        if (!insideGrid(grid, y)) {
+                          fate[i] = Fate::Outside;
+                          deathTime[i] = t + dt;
+                          continue;
+                        }
+                        if (interpolateNodes(liquid.solidNodeDistance, grid, y) < 0.0f) {
+                          fate[i] = Fate::Solid;
+                          deathTime[i] = t + dt;
+                          continue;
+                        }
+                        b.depth = -interpolateCellCentres(liquid.liquidDistance, grid, y);
+                        if (b.depth <= radius) {
+                          // The depth crossed the radius during the step: linear in time between
+                          // the two depths.
+                          const double fraction =
+                              before > b.depth
+                                  ? std::clamp((before - radius) / (before - b.depth), 0.0, 1.0)
+                                  : 1.0;
+                          fate[i] = Fate::Surface;
+                          deathTime[i] = t + dt * fraction;
+                        }
+                      }
+                    });
   std::size_t kept = 0;
   for (std::size_t i = 0; i < live_.size(); ++i) {
     switch (fate[i]) {
       case Fate::Lives:
         live_[kept++] = live_[i];
         continue;
-      case Fate::Surface: ++report.endedAtSurface; break;
-      case Fate::Outside: ++report.endedOutside; break;
-      case Fate::Solid: ++report.endedInSolid; break;
+      case Fate::Surface:
+        ++report.endedAtSurface;
+        break;
+      case Fate::Outside:
+        ++report.endedOutside;
+        break;
+      case Fate::Solid:
+        ++report.endedInSolid;
+        break;
     }
     histories_[live_[i].history].death = deathTime[i];
   }
@@ -173,15 +190,20 @@ void BubbleModel::rebuildDistance(const LiquidState& solverState) {
   // Depths are read down to the depth-growth test (or the largest radius); above the surface only
   // the tagging band is read (a particle in the air has no depth to grow, and bubbles are in the
   // liquid).
-  const double read = std::max((settings_.bandCells + settings_.entrainmentDepthCells) * h, settings_.maxRadius());
+  const double read =
+      std::max((settings_.bandCells + settings_.entrainmentDepthCells) * h, settings_.maxRadius());
   const double readInAir = settings_.bandCells * h;
   surface_.rebuild(solverState.liquidDistance, solverState.solidNodeDistance, solverState.grid,
                    read + kSurfaceBandMarginCells * h, readInAir + kSurfaceBandMarginCells * h);
 }
 
 LiquidState BubbleModel::withDistanceField(const LiquidState& solverState) const {
-  return LiquidState{solverState.particlePositions, solverState.particleVelocities, solverState.particleIds,
-                     surface_.field(),              solverState.velocity,           solverState.solidNodeDistance,
+  return LiquidState{solverState.particlePositions,
+                     solverState.particleVelocities,
+                     solverState.particleIds,
+                     surface_.field(),
+                     solverState.velocity,
+                     solverState.solidNodeDistance,
                      solverState.grid};
 }
 
@@ -207,21 +229,24 @@ BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, dou
   if (entrainmentUsesVelocityRange(settings_) &&
       solverState.particlePositions.size() * kCellsPerParticleForRange >= cells)
     range_.emplace(solverState.velocity, solverState.grid);
-  else range_.reset();
+  else
+    range_.reset();
   distance.wait();
   const LiquidState liquid = withDistanceField(solverState);
   BubbleStepReport report;
   // ... and end those that reached the surface, left the grid or entered a solid.
   endLiveBubbles(liquid, t, dt, report);
   // (2) Tags and seeds at the end of the step.
-  EntrainmentStep entrainment = detectEntrainment(liquid, tags_, settings_, t + dt, range_ ? &*range_ : nullptr);
+  EntrainmentStep entrainment =
+      detectEntrainment(liquid, tags_, settings_, t + dt, range_ ? &*range_ : nullptr);
   report.taggedParticles = entrainment.taggedParticles;
   report.newSeeds = entrainment.newSeeds;
   report.seeds = entrainment.seeds.size();
   // (3) New bubbles, from this step's own random stream.
-  const SpawnResult spawned =
-      spawnBubbles(entrainment.seeds, liquid, sizes_, settings_, t, dt, cellStream(streamRoot_, steps_));
-  for (const SpawnedBubble& b : spawned.bubbles) addBubble(b.radius, b.birth, b.position, b.depth, liquid);
+  const SpawnResult spawned = spawnBubbles(entrainment.seeds, liquid, sizes_, settings_, t, dt,
+                                           cellStream(streamRoot_, steps_));
+  for (const SpawnedBubble& b : spawned.bubbles)
+    addBubble(b.radius, b.birth, b.position, b.depth, liquid);
   report.spawn = spawned.counts;
   totals_ += spawned.counts;
 
@@ -243,15 +268,19 @@ void BubbleModel::sampleFrame(double time) {
   }
 }
 
-bool BubbleModel::insertBubble(double radius, const Vec3& position, double birth, const LiquidState& solverState) {
+bool BubbleModel::insertBubble(double radius, const Vec3& position, double birth,
+                               const LiquidState& solverState) {
   if (!(std::isfinite(radius) && radius > 0.0)) {
     std::ostringstream message;
-    message << "BubbleModel::insertBubble: radius must be a finite number > 0 (metres), got " << radius;
+    message << "BubbleModel::insertBubble: radius must be a finite number > 0 (metres), got "
+            << radius;
     throw std::invalid_argument(message.str());
   }
   for (double c : position)
-    if (!std::isfinite(c)) throw std::invalid_argument("BubbleModel::insertBubble: position must be finite");
-  if (!std::isfinite(birth)) throw std::invalid_argument("BubbleModel::insertBubble: birth must be finite");
+    if (!std::isfinite(c))
+      throw std::invalid_argument("BubbleModel::insertBubble: position must be finite");
+  if (!std::isfinite(birth))
+    throw std::invalid_argument("BubbleModel::insertBubble: birth must be finite");
   validateLiquidState(solverState);
   rebuildDistance(solverState);
   const LiquidState liquid = withDistanceField(solverState);
