@@ -2,6 +2,7 @@
 #include "sim/bubble_entrainment.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <optional>
@@ -216,13 +217,20 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
   forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
     BlockResult& out = blocks[b];
+    // Each record is looked up kPrefetchAhead particles early and fetched into the cache then;
+    // the ring holds what was found until its particle comes.
+    std::array<const EntrainmentTag*, kPrefetchAhead> found{};
+    const auto lookAhead = [&](std::size_t q) {
+      const EntrainmentTag* record = previous.find(liquid.particleIds[q]);
+      if (record) __builtin_prefetch(record);
+      found[q % kPrefetchAhead] = record;
+    };
+    for (std::size_t q = begin; q < std::min(end, begin + kPrefetchAhead); ++q) lookAhead(q);
     for (std::size_t p = begin; p < end; ++p) {
-      if (p + kPrefetchAhead < end)
-        if (const EntrainmentTag* ahead = previous.find(liquid.particleIds[p + kPrefetchAhead]))
-          __builtin_prefetch(ahead);
+      const EntrainmentTag* old = found[p % kPrefetchAhead];
+      if (p + kPrefetchAhead < end) lookAhead(p + kPrefetchAhead);  // takes old's slot
       const Vec3f& xf = liquid.particlePositions[p];
       const Vec3 x{xf[0], xf[1], xf[2]};
-      const EntrainmentTag* old = previous.find(liquid.particleIds[p]);
       // Deep or far, and no record: nothing to do (most particles), decided without the
       // interpolation.
       if (!old && !beyondBand.empty() && beyondBand[stencilBase(liquid.grid, x)]) continue;
