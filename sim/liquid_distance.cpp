@@ -231,7 +231,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             const std::uint8_t inSolid = solid[i];
             const std::uint8_t liquid = static_cast<std::uint8_t>(value[i] < 0.0f) & (inSolid ^ 1u);
             out[i] = static_cast<std::uint8_t>(inSolid * kSolid + liquid * kLiquid);
-            distance[i] = beyond[(inSolid | liquid) & 1u];  // not air: the liquid side's band
+            distance[i] =
+                beyond[inSolid | liquid];  // not air (liquid or solid): the liquid side's band
             anySolid |= inSolid;
             anyLiquid |= liquid;
             anyAir |= (inSolid | liquid) ^ 1u;
