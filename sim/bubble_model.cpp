@@ -29,8 +29,8 @@ constexpr double kTimeTolerance = 1e-9;
 /// Cells the surface band holds beyond the deepest (or highest) position a test reads (tagging
 /// band + depth growth, or the largest radius; the tagging band in the air): a trilinear sample
 /// reads the 8 centres around it, all within √3 ≈ 1.73 cells, so every centre a test reads holds
-/// its propagated distance, never the clamp. Deeper reads (SurfaceDistance::at beyond band − 2
-/// cells) take the exact distance to the nearest surface point instead of the field.
+/// its distance to the nearest surface point, never the clamp. Deeper reads (SurfaceDistance::at
+/// beyond band − 2 cells) search the surface points themselves.
 constexpr double kSurfaceBandMarginCells = 1.75;
 
 /// The grid velocity's range (velocity_range.h, about 3.5 ns per cell) is built only with at least
@@ -216,9 +216,9 @@ BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, dou
   if (!std::isfinite(t)) rejectTime("BubbleModel::step: t", t, stateTime_);
   if (steps_ > 0 && !sameTime(t, stateTime_)) rejectTime("BubbleModel::step: t", t, stateTime_);
   validateLiquidState(solverState);
-  // The surface distance (one serial propagation) is rebuilt in a task while this thread moves
-  // the bubbles and bounds the grid velocity, which read only the solver's state; with one thread
-  // the task runs at wait(). Either way each result is computed as alone.
+  // The surface distance is rebuilt in a task while this thread moves the bubbles and bounds the
+  // grid velocity, which read only the solver's state, and then takes the rebuild's own tasks at
+  // wait(); with one thread the task runs there. Either way each result is computed as alone.
   tbb::task_group distance;
   distance.run([&] { rebuildDistance(solverState); });
   // (1) Move the bubbles made in earlier steps. Only they read the last step's grid velocity, so

@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -28,8 +27,6 @@ constexpr int kBucketCells = 4;
 /// at() trusts the grid field where its magnitude is below band − this many cells: the 8 centres
 /// of the interpolant lie within √3 cells of the position, so none of them holds the clamped value.
 constexpr double kFieldMarginCells = 2.0;
-/// Key width of one bucket of the propagation front [cells²]: a few entries per bucket.
-constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
 /// Cells per task of the whole-grid passes. Alone (BM_SurfaceDistanceRebuild, the other thread
 /// asleep) tasks this small were slower than one task for the glass pour's 41 000 cells (about
 /// 385 against 360 µs per rebuild): waking the other thread cost more than it saved. Inside the
@@ -37,9 +34,9 @@ constexpr double kBucketWidthCells2 = 1.0 / 1024.0;
 /// alternating glass pour runs, one task against 8 192-cell tasks (the row phase pass too), gave
 /// a bubble model of 0.502 s against 0.486 s on average, 6 of 7 pairs faster.
 constexpr std::size_t kCellsPerTask = std::size_t{1} << 13;
-/// `limit` of a surface cell: below every squared distance, so no propagated point replaces its
-/// own.
-constexpr double kNeverReplaced = -1.0;
+/// Margin [cells] by which a point's chord is widened against the rounding of its ends: the cells
+/// it adds lie at the band's edge, where the field takes the band itself.
+constexpr double kChordMarginCells = 1e-6;
 
 /// A cell's phase for the sign and the surface: air, liquid, or solid (counted as liquid in the
 /// sign, and making no surface).
@@ -47,104 +44,10 @@ enum Phase : std::uint8_t { kAir = 0, kLiquid = 1, kSolid = 2 };
 
 }  // namespace
 
-/// The propagation front: (squared distance, cell) entries popped smallest first, ties by cell
-/// index. A bucket queue: entries are listed by key in buckets of fixed width; the lowest
-/// non-empty bucket (found by a bit per bucket: most are empty) is taken out sorted (the run; a
-/// bucket of one entry is popped at once) and popped from its end, and an entry pushed
-/// into a bucket at or below the run's is inserted in the run in order. Every entry's key is
-/// unique (a cell is pushed again only when strictly closer), so it pops in the same order as any
-/// other exact priority queue. Sorting the run, not scanning its bucket for each pop, keeps a
-/// crowded bucket cheap: still water under a flat level puts every surface cell's point at the
-/// same distance, a bucket of thousands that a scan per pop made quadratic (a still basin's
-/// bubble model: 34 s for 2 s of water, now 1 s).
-class SurfaceDistance::NearestFirst {
- public:
-  struct Entry {
-    double key;  ///< [m²]
-    Cell cell;
-    Vec3 point;  ///< the surface point the key is the squared distance to [m]
-    bool operator<(const Entry& o) const {
-      return key < o.key || (key == o.key && cell.at < o.cell.at);
-    }
-  };
-  /// Empties the queue for keys of bucket width `width` [m²] up to `largest` [m²] (larger ones
-  /// share the last bucket), keeping its memory: a queue popped empty has every bucket empty.
-  void reset(double width, double largest) {
-    scale_ = 1.0 / width;
-    const std::size_t buckets = static_cast<std::size_t>(largest * scale_) + 2;
-    if (first_.size() != buckets || size_ != 0) {
-      first_.assign(buckets, kNone);
-      filled_.assign((buckets + 63) / 64, 0);
-    }
-    pool_.clear();
-    run_.clear();
-    cursor_ = 0;
-    size_ = 0;
-  }
-  bool empty() const { return size_ == 0; }
-  void push(const Entry& e) {
-    ++size_;
-    const std::size_t b = std::min(static_cast<std::size_t>(e.key * scale_), first_.size() - 1);
-    if (!run_.empty() && b <= runBucket_) {  // among or before the run's entries: in order
-      run_.insert(std::lower_bound(run_.begin(), run_.end(), e,
-                                   [](const Entry& in, const Entry& x) { return x < in; }),
-                  e);
-      return;
-    }
-    pool_.push_back({e, first_[b]});
-    first_[b] = static_cast<std::uint32_t>(pool_.size() - 1);
-    filled_[b / 64] |= std::uint64_t{1} << (b % 64);
-    cursor_ = std::min(cursor_, b);
-  }
-  Entry pop() {
-    --size_;
-    if (run_.empty()) {
-      // The lowest non-empty bucket, found by its bit; one entry alone is the run, popped at once.
-      std::size_t word = cursor_ / 64;
-      std::uint64_t bits = filled_[word] & (~std::uint64_t{0} << (cursor_ % 64));
-      while (bits == 0) bits = filled_[++word];
-      cursor_ = word * 64 + static_cast<std::size_t>(std::countr_zero(bits));
-      filled_[word] &= ~(std::uint64_t{1} << (cursor_ % 64));
-      const std::uint32_t head = first_[cursor_];
-      first_[cursor_] = kNone;
-      if (pool_[head].next == kNone) return pool_[head].entry;
-      // Otherwise the bucket becomes the run, largest first.
-      for (std::uint32_t at = head; at != kNone; at = pool_[at].next)
-        run_.push_back(pool_[at].entry);
-      runBucket_ = cursor_;
-      std::sort(run_.begin(), run_.end(), [](const Entry& a, const Entry& b) { return b < a; });
-    }
-    const Entry smallest = run_.back();
-    run_.pop_back();
-    return smallest;
-  }
-
- private:
-  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  struct Node {
-    Entry entry;
-    std::uint32_t next;
-  };
-  double scale_ = 1.0;
-  std::vector<std::uint32_t> first_;   ///< first node of each bucket
-  std::vector<std::uint64_t> filled_;  ///< one bit per bucket: set while it holds entries
-  std::vector<Node> pool_;
-  std::vector<Entry> run_;  ///< the entries of buckets ≤ runBucket_, largest first
-  std::size_t runBucket_ = 0;
-  std::size_t cursor_ = 0, size_ = 0;
-};
-
-SurfaceDistance::SurfaceDistance() : front_(std::make_unique<NearestFirst>()) {}
-
 SurfaceDistance::SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance,
-                                 const GridGeometry& grid, double band, double airBand)
-    : SurfaceDistance() {
+                                 const GridGeometry& grid, double band, double airBand) {
   rebuild(phi, solidNodeDistance, grid, band, airBand);
 }
-
-SurfaceDistance::~SurfaceDistance() = default;
-SurfaceDistance::SurfaceDistance(SurfaceDistance&&) noexcept = default;
-SurfaceDistance& SurfaceDistance::operator=(SurfaceDistance&&) noexcept = default;
 
 void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistance,
                               const GridGeometry& grid, double band, double airBand) {
@@ -155,27 +58,19 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const std::size_t sj = static_cast<std::size_t>(ni), sk = static_cast<std::size_t>(ni) * nj;
   const std::size_t n = sk * nk;
-  // The work array limit_ is padded by one cell on each side.
-  const std::size_t psj = static_cast<std::size_t>(ni) + 2, psk = psj * (nj + 2),
-                    pn = psk * (nk + 2);
-  const auto padded = [&](int i, int j, int k) { return (k + 1) * psk + (j + 1) * psj + (i + 1); };
-  if (pn >= std::numeric_limits<std::uint32_t>::max() ||
+  if (n >= std::numeric_limits<std::uint32_t>::max() ||
       std::max({ni, nj, nk}) >= std::numeric_limits<std::int16_t>::max())
     throw std::invalid_argument(
         "SurfaceDistance: more cells than 32-bit indices (16-bit per axis) address");
-  const bool newLayout = grid_.cells != grid.cells || limit_.size() != pn;
   grid_ = grid;
   band_ = band;
   airBand_ = airBand;
   const double h = grid.cellSize;
   phase_.resize(n);
-  if (newLayout) {
-    limit_.assign(pn, kNeverReplaced);  // the padding keeps it: only grid cells are written
-  }
   for (int a = 0; a < 3; ++a) {
-    centres_[a].resize(grid.cells[a] + 2);
-    for (int i = -1; i <= grid.cells[a]; ++i)
-      centres_[a][i + 1] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
+    centres_[a].resize(grid.cells[a]);
+    for (int i = 0; i < grid.cells[a]; ++i)
+      centres_[a][i] = grid.origin[a] + (i + 0.5) * h;  // as cellCentre
   }
   // Whole-grid passes in tasks of at least kCellsPerTask cells: a small grid is one task, run by
   // the calling thread without waking another.
@@ -212,7 +107,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   // Per row of cells (j, k), which phases it holds (bit 1 << phase): rows of one phase whose
   // neighbour rows hold no other phase have no surface cell, and are passed over below.
   // The field starts at ±band (the band of each cell's side), written in the same pass: step 3
-  // overwrites the cells the front reaches.
+  // overwrites the rows the surface points reach.
   if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
   const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by liquid
   rowPhases_.resize(static_cast<std::size_t>(nj) * nk);
@@ -242,10 +137,20 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         }
       });
   const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
-  // Cells within the band take their first point when it is within their side's band.
+  // A cell takes the distance to its nearest point when it is within its side's band.
+  const double side[2] = {airBand, band};                    // by isLiquid
   const double band2[2] = {airBand * airBand, band * band};  // by isLiquid
-  const double firstLimit[2] = {std::nextafter(band2[0], kUnknown),
-                                std::nextafter(band2[1], kUnknown)};
+  // The box of cell centres within `band` of a point p, per axis.
+  const auto reachOf = [&](const Vec3& p) {
+    Reach box;
+    for (int a = 0; a < 3; ++a) {
+      box.lo[a] = static_cast<std::int16_t>(
+          std::max(0, static_cast<int>(std::floor((p[a] - band - centres_[a][0]) / h)) + 1));
+      box.hi[a] = static_cast<std::int16_t>(std::min(
+          grid.cells[a] - 1, static_cast<int>(std::floor((p[a] + band - centres_[a][0]) / h))));
+    }
+    return box;
+  };
   // 1. Cells next to the surface: the foot of the perpendicular on the plane through the nearest
   //    crossing on each axis (intercepts θ_a·h, directions s_a): normal ∝ (s_a/(θ_a h)), distance
   //    d = 1/√(Σ 1/(θ_a h)²), foot = centre + d²·(s_a/(θ_a h)). Each z-plane lists its own, so the
@@ -265,13 +170,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             const std::uint8_t* const up = j + 1 < nj ? row + sj : solidRow_.data();
             const std::uint8_t* const back = k > 0 ? row - sk : solidRow_.data();
             const std::uint8_t* const ahead = k + 1 < nk ? row + sk : solidRow_.data();
-            double* const limit = &limit_[padded(0, j, k)];
             const std::size_t rowIndex = static_cast<std::size_t>(k) * nj + j;
             const std::uint8_t held = rowPhases_[rowIndex];
-            if (held == 1u << kAir || held == 1u << kLiquid)
-              std::fill(limit, limit + ni, firstLimit[held != 1u << kAir]);
-            else
-              for (int i = 0; i < ni; ++i) limit[i] = firstLimit[row[i] != kAir];
             // A surface cell needs air and liquid in its row or the four rows beside it.
             std::uint8_t nearby = held;
             if (j > 0) nearby |= rowPhases_[rowIndex - 1];
@@ -320,20 +220,18 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
                 else
                   inverse[a] = side / nearest;
               }
-              const Vec3 c{centres_[0][i + 1], centres_[1][j + 1], centres_[2][k + 1]};
-              const Cell cell{static_cast<std::uint32_t>(padded(i, j, k)),
-                              static_cast<std::uint32_t>(at), static_cast<std::int16_t>(i),
+              const Vec3 c{centres_[0][i], centres_[1][j], centres_[2][k]};
+              const Cell cell{static_cast<std::uint32_t>(at), static_cast<std::int16_t>(i),
                               static_cast<std::int16_t>(j), static_cast<std::int16_t>(k)};
-              limit_[cell.at] = kNeverReplaced;
               if (onSurface) {
-                surfaceOfPlane[k].push_back({cell, 0.0, c});
+                surfaceOfPlane[k].push_back({cell, 0.0, c, reachOf(c)});
                 continue;
               }
               const double d2 = 1.0 / (inverse[0] * inverse[0] + inverse[1] * inverse[1] +
                                        inverse[2] * inverse[2]);
               Vec3 foot;
               for (int a = 0; a < 3; ++a) foot[a] = c[a] + d2 * inverse[a];
-              surfaceOfPlane[k].push_back({cell, std::sqrt(d2), foot});
+              surfaceOfPlane[k].push_back({cell, std::sqrt(d2), foot, reachOf(foot)});
             }
           }
       });
@@ -341,76 +239,67 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   surface.clear();
   for (const std::vector<SurfaceCell>& plane : surfaceOfPlane)
     surface.insert(surface.end(), plane.begin(), plane.end());
-  // 2. Every other cell within the band: the nearest surface point among those its 26 neighbours
-  //    hold, settled in order of distance (Dijkstra's order; closest-point propagation, so the
-  //    distance is Euclidean to the point found and no upwind error accumulates with depth).
-  //    Ties are broken by cell index: the result is deterministic. limit_ holds, per cell, the
-  //    squared distance [m²] a new point must be below to replace its own.
-  NearestFirst& front = *front_;
-  front.reset(kBucketWidthCells2 * h * h, band * band);
-  for (const SurfaceCell& s : surface) front.push({s.distance * s.distance, s.cell, s.point});
-  touched_.clear();
-  while (!front.empty()) {
-    // An entry that is not stale is the cell's latest (keys only decrease), so its point is the
-    // cell's closest point.
-    const auto [key, cell, p] = front.pop();
-    if (limit_[cell.at] != kNeverReplaced && key > limit_[cell.at])
-      continue;  // reached closer since
-    // Squared distance from p to the 26 neighbours' centres: per axis first, summed in the order
-    // x, y, z of the formula (x² + y²) + z², so each is rounded as written out in full. The
-    // padding's limit is below every distance: neighbours beyond the grid are never taken.
-    const int index[3] = {cell.i, cell.j, cell.k};
-    double axis[3][3];
-    for (int a = 0; a < 3; ++a)
-      for (int d = 0; d < 3; ++d) {
-        const double e = centres_[a][index[a] + d] - p[a];  // padded: index + 1 + (d − 1)
-        axis[a][d] = e * e;
-      }
-    // First the 27 distances and which of them beat their cell's limit (one bit each, no branch:
-    // a point improves about one neighbour per pop), then the cells they improve. The neighbours
-    // are distinct cells, so testing all before updating any gives the same updates.
-    double e2[27];
-    std::uint32_t improves = 0;
-    for (int dz = 0; dz < 3; ++dz)
-      for (int dy = 0; dy < 3; ++dy) {
-        const double* const limit = &limit_[cell.at + (dz - 1) * static_cast<std::ptrdiff_t>(psk) +
-                                            (dy - 1) * static_cast<std::ptrdiff_t>(psj) - 1];
-        const double yz = axis[1][dy];
-        for (int dx = 0; dx < 3; ++dx) {
-          const int n = (dz * 3 + dy) * 3 + dx;
-          e2[n] = (axis[0][dx] + yz) + axis[2][dz];
-          improves |= static_cast<std::uint32_t>(e2[n] < limit[dx])
-                      << n;  // never the cell itself: e2 = limit
+  // 2. Every other cell within the band: the distance to the nearest surface point. Each point
+  //    lowers the squared distance held by every cell centre within `band` of it (a brute-force
+  //    search, row by row over the chords of its ball: about 450 cells per point at the bubble
+  //    model's 4.75-cell band, in loops that vectorise), so a cell holds the smallest over all
+  //    points, in any order: the same bits for any thread count. Tasks own z-planes, each taking
+  //    the points within reach of its planes; a row is cleared when a point first reaches it.
+  const int reach = static_cast<int>(std::ceil(band / h)) + 1;  // a point lies within a cell of
+                                                                // its own cell's centre
+  planeStart_.assign(nk + 1, 0);
+  for (int k = 0; k < nk; ++k) planeStart_[k + 1] = planeStart_[k] + surfaceOfPlane[k].size();
+  nearest2_.resize(n);
+  rowReached_.assign(static_cast<std::size_t>(nj) * nk, 0);
+  const double reachBand2 = band * band;
+  tbb::parallel_for(tbb::blocked_range<int>(0, nk), [&](const tbb::blocked_range<int>& r) {
+    const std::size_t first = planeStart_[std::max(0, r.begin() - reach)];
+    const std::size_t last = planeStart_[std::min(nk, r.end() + reach)];
+    for (std::size_t q = first; q < last; ++q) {
+      const SurfaceCell& s = surface[q];
+      const Vec3& p = s.point;
+      const int k0 = std::max<int>(s.reach.lo[2], r.begin()),
+                k1 = std::min<int>(s.reach.hi[2], r.end() - 1);
+      const int i0 = s.reach.lo[0], width = s.reach.hi[0] - i0 + 1;
+      const double* const x = &centres_[0][i0];
+      for (int k = k0; k <= k1; ++k) {
+        const double ez = centres_[2][k] - p[2], z2 = ez * ez;
+        for (int j = s.reach.lo[1]; j <= s.reach.hi[1]; ++j) {
+          const double ey = centres_[1][j] - p[1], y2 = ey * ey;
+          if (y2 + z2 >= reachBand2) continue;
+          const std::size_t row = static_cast<std::size_t>(k) * nj + j;
+          double* const nearest2 = &nearest2_[row * sj];
+          if (!rowReached_[row]) {
+            std::fill(nearest2, nearest2 + ni, kUnknown);
+            rowReached_[row] = 1;
+          }
+          // (x² + y²) + z², as the squared distance is written out.
+          double* const cells = nearest2 + i0;
+          for (int i = 0; i < width; ++i) {
+            const double ex = x[i] - p[0];
+            cells[i] = std::min(cells[i], (ex * ex + y2) + z2);
+          }
         }
       }
-    for (; improves != 0; improves &= improves - 1) {
-      const int n = std::countr_zero(improves);
-      const int dx = n % 3 - 1, dy = n / 3 % 3 - 1, dz = n / 9 - 1;
-      const std::ptrdiff_t offset =
-          dz * static_cast<std::ptrdiff_t>(psk) + dy * static_cast<std::ptrdiff_t>(psj) + dx;
-      const std::ptrdiff_t gridOffset =
-          dz * static_cast<std::ptrdiff_t>(sk) + dy * static_cast<std::ptrdiff_t>(sj) + dx;
-      const Cell reached{static_cast<std::uint32_t>(cell.at + offset),
-                         static_cast<std::uint32_t>(cell.grid + gridOffset),
-                         static_cast<std::int16_t>(cell.i + dx),
-                         static_cast<std::int16_t>(cell.j + dy),
-                         static_cast<std::int16_t>(cell.k + dz)};
-      limit_[reached.at] = e2[n];
-      touched_.push_back(reached);
-      front.push({e2[n], reached, p});
     }
-  }
-  // 3. The sign of the phase: the cells the front reached (the others hold ±band since the phase
-  //    pass, as cells no point reached keep their first limit, beyond their side's band).
+    // 3. The sign of the phase, in the rows points reached (the others hold ±band since the
+    //    phase pass): a cell takes the distance within its side's band, else the band.
+    for (int k = r.begin(); k < r.end(); ++k)
+      for (int j = 0; j < nj; ++j) {
+        const std::size_t row = static_cast<std::size_t>(k) * nj + j;
+        if (!rowReached_[row]) continue;
+        const double* const nearest2 = &nearest2_[row * sj];
+        const std::uint8_t* const phase = &phase_[row * sj];
+        float* const out = field_.data() + row * sj;
+        for (int i = 0; i < ni; ++i) {
+          const bool liquid = phase[i] != kAir;
+          const double magnitude =
+              nearest2[i] <= band2[liquid] ? std::sqrt(nearest2[i]) : side[liquid];
+          out[i] = static_cast<float>(liquid ? -magnitude : magnitude);
+        }
+      }
+  });
   float* const out = field_.data();
-  for (const Cell& c : touched_) {
-    const std::size_t at = c.grid;
-    const double side = isLiquid(at) ? band : airBand;
-    const double squared = limit_[c.at];
-    const double magnitude = squared <= band2[isLiquid(at)] ? std::sqrt(squared) : side;
-    out[at] =
-        static_cast<float>(isLiquid(at) ? -std::min(magnitude, side) : std::min(magnitude, side));
-  }
   for (const SurfaceCell& s : surface) {  // surface cells: the distance to their own point
     const double magnitude = std::min(s.distance, isLiquid(s.cell.grid) ? band : airBand);
     out[s.cell.grid] = static_cast<float>(isLiquid(s.cell.grid) ? -magnitude : magnitude);

@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "sim/array3.h"
@@ -20,10 +19,10 @@ namespace fluidsound::sim {
 /// Surface points: each cell next to the surface (a 6-neighbour of the other phase) holds the foot
 /// of its perpendicular on the plane through its nearest crossing per axis, each crossing placed
 /// by linear interpolation of φ between the two centres (the surface the interpolant of φ
-/// describes). Band field: every cell within `band` of the surface gets the distance to the
-/// nearest surface point among those its 26 neighbours hold, settled in increasing distance
-/// (closest-point propagation in Dijkstra's order, as the vector distance transforms of
-/// Danielsson 1980 [memory]; Euclidean to the point found, so no upwind error accumulates).
+/// describes). Band field: every cell within `band` of a surface point gets the distance to the
+/// nearest surface point (each point lowers the squared distance of the cells within the band
+/// around it: exact to the points, in any order, so the field does not depend on the threads); a
+/// cell next to the surface keeps the distance to its own point.
 /// Cells further away hold ±band. Exact for a plane; elsewhere within the first layer's O(h) error
 /// (tests/sim/liquid_distance_test.cpp).
 ///
@@ -32,10 +31,7 @@ namespace fluidsound::sim {
 /// distances pass through them, and they count as liquid in the sign.
 class SurfaceDistance {
  public:
-  SurfaceDistance();
-  ~SurfaceDistance();
-  SurfaceDistance(SurfaceDistance&&) noexcept;
-  SurfaceDistance& operator=(SurfaceDistance&&) noexcept;
+  SurfaceDistance() = default;
   /// @param phi                the solver's liquid field at cell centres [m]; only its sign and
   ///                           its values at the cells next to the surface are read
   /// @param solidNodeDistance  solid signed distance at the nodes [m]
@@ -67,20 +63,23 @@ class SurfaceDistance {
  private:
   /// Distance [m] from p to the nearest surface point, by rings of buckets around p's bucket.
   double nearestSurfacePoint(const Vec3& p) const;
-  /// A cell: its index in the padded work array limit_ (in the same order as the
-  /// grid's), its linear index in the grid, and its indices per axis.
+  /// A cell: its linear index in the grid, and its indices per axis.
   struct Cell {
-    std::uint32_t at;
     std::uint32_t grid;
     std::int16_t i, j, k;
   };
-  /// A cell next to the surface, the distance [m] to its surface point, and the point [m].
+  /// The cells whose centre may lie within the band of a point: [lo, hi] per axis.
+  struct Reach {
+    std::int16_t lo[3], hi[3];
+  };
+  /// A cell next to the surface, the distance [m] to its surface point, the point [m], and the
+  /// cells it reaches.
   struct SurfaceCell {
     Cell cell;
     double distance;
     Vec3 point;
+    Reach reach;
   };
-  class NearestFirst;
 
   GridGeometry grid_;
   double band_ = 0.0, airBand_ = 0.0;
@@ -94,15 +93,13 @@ class SurfaceDistance {
   std::vector<std::uint8_t> solidCells_;   ///< 1 for a cell inside a solid
   std::vector<std::uint8_t> rowPhases_;    ///< per row of cells (j, k): bit 1 << phase for each phase it holds
   std::vector<std::uint8_t> solidRow_;     ///< a row of solid phases: the neighbours beyond the grid
-  std::vector<Cell> touched_;              ///< cells the front reached (repeats possible)
-  // limit_ covers the grid and one layer of cells around it (whose limit is below every distance,
-  // so that they are never reached): the propagation needs no test at the grid's edges.
-  std::vector<double> limit_;              ///< squared distance a new point must be below [m²]
-  std::vector<double> centres_[3];         ///< cell-centre coordinate per index + 1 (padded), per axis [m]
+  std::vector<double> nearest2_;           ///< squared distance to the nearest point, in rows reached [m²]
+  std::vector<std::uint8_t> rowReached_;   ///< per row of cells (j, k): 1 once a point reached it
+  std::vector<std::size_t> planeStart_;    ///< surface cells of z-plane k: [start[k], start[k + 1])
+  std::vector<double> centres_[3];         ///< cell-centre coordinate per index, per axis [m]
   std::vector<std::vector<SurfaceCell>> surfaceOfPlane_;  ///< surface cells found per z-plane
   std::vector<SurfaceCell> surface_;       ///< all surface cells, in cell order
   std::vector<std::size_t> bucketNext_;    ///< next free slot per bucket while grouping points
-  std::unique_ptr<NearestFirst> front_;    ///< the propagation front (its memory is reused)
 };
 
 }  // namespace fluidsound::sim

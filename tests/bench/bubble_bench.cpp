@@ -1,7 +1,7 @@
 // The bubble model's cost against the liquid solver's (not a test): the whole of
 // scenes/glass_pour.scene.json (the issue's scene), scenes/dam_break.scene.json,
 // scenes/pour_tank.scene.json and scenes/still_basin.scene.json (still water under a flat level:
-// every surface point at one distance, which once made the distance propagation quadratic) with
+// every surface point at one distance, which once made the distance's propagation quadratic) with
 // the bubble model attached as `fluidsound simulate` runs it, reporting the fluid stage's seconds
 // (the solver's substeps and once-per-frame particle maintenance), the bubble model's seconds and
 // its share of the fluid stage (issue 6: bubble model and transfer together under 10 %; the

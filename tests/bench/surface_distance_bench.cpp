@@ -1,7 +1,7 @@
 // The bubble model's surface distance alone (not a test): SurfaceDistance::rebuild on seven
 // liquid fields of the glass pour (scenes/glass_pour.scene.json, every 100th substep of its 2 s),
 // with the bubble model's bands. A whole run's bubble share moves by ±2 points between runs on a
-// shared machine; this isolates the rebuild (the serial propagation and the whole-grid passes)
+// shared machine; this isolates the rebuild (the whole-grid passes and the band's nearest points)
 // so that a change to it can be measured: the minimum over repetitions is the figure to compare.
 //   build/tests/fluidsound_bench --benchmark_filter=SurfaceDistanceRebuild
 #include <benchmark/benchmark.h>
