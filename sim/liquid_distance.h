@@ -93,7 +93,7 @@ class SurfaceDistance {
   std::vector<std::uint8_t> solidCells_;   ///< 1 for a cell inside a solid
   std::vector<std::uint8_t> rowPhases_;    ///< per row of cells (j, k): bit 1 << phase for each phase it holds
   std::vector<std::uint8_t> solidRow_;     ///< a row of solid phases: the neighbours beyond the grid
-  std::vector<double> nearest2_;           ///< squared distance to the nearest point, in rows reached [m²]
+  std::vector<float> nearest2_;            ///< squared distance to the nearest point, in rows reached [m²]
   std::vector<std::uint8_t> rowReached_;   ///< per row of cells (j, k): 1 once a point reached it
   std::vector<std::size_t> planeStart_;    ///< surface cells of z-plane k: [start[k], start[k + 1])
   std::vector<double> centres_[3];         ///< cell-centre coordinate per index, per axis [m]
