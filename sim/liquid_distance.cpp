@@ -34,9 +34,11 @@ constexpr double kFieldMarginCells = 2.0;
 /// alternating glass pour runs, one task against 8 192-cell tasks (the row phase pass too), gave
 /// a bubble model of 0.502 s against 0.486 s on average, 6 of 7 pairs faster.
 constexpr std::size_t kCellsPerTask = std::size_t{1} << 13;
-/// Margin [cells] by which a point's chord is widened against the rounding of its ends: the cells
-/// it adds lie at the band's edge, where the field takes the band itself.
-constexpr double kChordMarginCells = 1e-6;
+/// z-planes per task of the band's nearest points: each task takes every point within reach of its
+/// planes, so small tasks take each point many times. The glass pour's bubble step (32 planes, a
+/// point reaching 6 planes either way), timed inside runs: 170-190 us per rebuild in tasks of 1
+/// plane, 157-165 of 4, 138-140 of 8, 195-220 of 16, 250-330 in one task.
+constexpr int kPlanesPerTask = 8;
 
 /// A cell's phase for the sign and the surface: air, liquid, or solid (counted as liquid in the
 /// sign, and making no surface).
@@ -253,56 +255,57 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   nearest2_.resize(n);
   rowReached_.assign(static_cast<std::size_t>(nj) * nk, 0);
   const double reachBand2 = band * band;
-  tbb::parallel_for(tbb::blocked_range<int>(0, nk), [&](const tbb::blocked_range<int>& r) {
-    const std::size_t first = planeStart_[std::max(0, r.begin() - reach)];
-    const std::size_t last = planeStart_[std::min(nk, r.end() + reach)];
-    std::vector<float> x2(ni);  // a point's (x_i − p_x)² across its box [m²]
-    for (std::size_t q = first; q < last; ++q) {
-      const SurfaceCell& s = surface[q];
-      const Vec3& p = s.point;
-      const int k0 = std::max<int>(s.reach.lo[2], r.begin()),
-                k1 = std::min<int>(s.reach.hi[2], r.end() - 1);
-      const int i0 = s.reach.lo[0], width = s.reach.hi[0] - i0 + 1;
-      for (int i = 0; i < width; ++i) {
-        const double ex = centres_[0][i0 + i] - p[0];
-        x2[i] = static_cast<float>(ex * ex);
-      }
-      for (int k = k0; k <= k1; ++k) {
-        const double ez = centres_[2][k] - p[2], z2 = ez * ez;
-        for (int j = s.reach.lo[1]; j <= s.reach.hi[1]; ++j) {
-          const double ey = centres_[1][j] - p[1], y2 = ey * ey;
-          if (y2 + z2 >= reachBand2) continue;
-          const std::size_t row = static_cast<std::size_t>(k) * nj + j;
-          float* const nearest2 = &nearest2_[row * sj];
-          if (!rowReached_[row]) {
-            std::fill(nearest2, nearest2 + ni, std::numeric_limits<float>::infinity());
-            rowReached_[row] = 1;
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, nk, kPlanesPerTask), [&](const tbb::blocked_range<int>& r) {
+        const std::size_t first = planeStart_[std::max(0, r.begin() - reach)];
+        const std::size_t last = planeStart_[std::min(nk, r.end() + reach)];
+        std::vector<float> x2(ni);  // a point's (x_i − p_x)² across its box [m²]
+        for (std::size_t q = first; q < last; ++q) {
+          const SurfaceCell& s = surface[q];
+          const Vec3& p = s.point;
+          const int k0 = std::max<int>(s.reach.lo[2], r.begin()),
+                    k1 = std::min<int>(s.reach.hi[2], r.end() - 1);
+          const int i0 = s.reach.lo[0], width = s.reach.hi[0] - i0 + 1;
+          for (int i = 0; i < width; ++i) {
+            const double ex = centres_[0][i0 + i] - p[0];
+            x2[i] = static_cast<float>(ex * ex);
           }
-          // In floats, four cells to a vector register: 1e-7 relative, far below the O(h) of the
-          // points' placement.
-          const float yz2 = static_cast<float>(y2 + z2);
-          float* const cells = nearest2 + i0;
-          for (int i = 0; i < width; ++i) cells[i] = std::min(cells[i], x2[i] + yz2);
+          for (int k = k0; k <= k1; ++k) {
+            const double ez = centres_[2][k] - p[2], z2 = ez * ez;
+            for (int j = s.reach.lo[1]; j <= s.reach.hi[1]; ++j) {
+              const double ey = centres_[1][j] - p[1], y2 = ey * ey;
+              if (y2 + z2 >= reachBand2) continue;
+              const std::size_t row = static_cast<std::size_t>(k) * nj + j;
+              float* const nearest2 = &nearest2_[row * sj];
+              if (!rowReached_[row]) {
+                std::fill(nearest2, nearest2 + ni, std::numeric_limits<float>::infinity());
+                rowReached_[row] = 1;
+              }
+              // In floats, four cells to a vector register: 1e-7 relative, far below the O(h) of
+              // the points' placement.
+              const float yz2 = static_cast<float>(y2 + z2);
+              float* const cells = nearest2 + i0;
+              for (int i = 0; i < width; ++i) cells[i] = std::min(cells[i], x2[i] + yz2);
+            }
+          }
         }
-      }
-    }
-    // 3. The sign of the phase, in the rows points reached (the others hold ±band since the
-    //    phase pass): a cell takes the distance within its side's band, else the band.
-    for (int k = r.begin(); k < r.end(); ++k)
-      for (int j = 0; j < nj; ++j) {
-        const std::size_t row = static_cast<std::size_t>(k) * nj + j;
-        if (!rowReached_[row]) continue;
-        const float* const nearest2 = &nearest2_[row * sj];
-        const std::uint8_t* const phase = &phase_[row * sj];
-        float* const out = field_.data() + row * sj;
-        for (int i = 0; i < ni; ++i) {
-          const bool liquid = phase[i] != kAir;
-          const double magnitude =
-              nearest2[i] <= band2[liquid] ? std::sqrt(nearest2[i]) : side[liquid];
-          out[i] = static_cast<float>(liquid ? -magnitude : magnitude);
-        }
-      }
-  });
+        // 3. The sign of the phase, in the rows points reached (the others hold ±band since the
+        //    phase pass): a cell takes the distance within its side's band, else the band.
+        for (int k = r.begin(); k < r.end(); ++k)
+          for (int j = 0; j < nj; ++j) {
+            const std::size_t row = static_cast<std::size_t>(k) * nj + j;
+            if (!rowReached_[row]) continue;
+            const float* const nearest2 = &nearest2_[row * sj];
+            const std::uint8_t* const phase = &phase_[row * sj];
+            float* const out = field_.data() + row * sj;
+            for (int i = 0; i < ni; ++i) {
+              const bool liquid = phase[i] != kAir;
+              const double magnitude =
+                  nearest2[i] <= band2[liquid] ? std::sqrt(nearest2[i]) : side[liquid];
+              out[i] = static_cast<float>(liquid ? -magnitude : magnitude);
+            }
+          }
+      });
   float* const out = field_.data();
   for (const SurfaceCell& s : surface) {  // surface cells: the distance to their own point
     const double magnitude = std::min(s.distance, isLiquid(s.cell.grid) ? band : airBand);
