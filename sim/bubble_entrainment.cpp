@@ -106,11 +106,11 @@ struct BlockResult {
 };
 
 /// The speed at which particle velocity v moves into the liquid relative to the liquid
-/// probe·h beneath x along the inward normal [m/s]; −∞ where the normal is undefined.
-double relativeSpeedIntoLiquid(const LiquidState& liquid, const Vec3& x, const Vec3& v,
-                               double probeDistance) {
-  const FieldSample phi = sampleCellCentres(liquid.liquidDistance, liquid.grid, x);
-  const Vec3& g = phi.gradient;
+/// probe·h beneath x along the inward normal [m/s], the normal from the gradient of φ at x
+/// (`phi`); −∞ where the normal is undefined.
+double relativeSpeedIntoLiquid(const LiquidState& liquid, const CellCentreStencil& phi,
+                               const Vec3& x, const Vec3& v, double probeDistance) {
+  const Vec3 g = phi.gradient();
   const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (!(norm >= kMinimumDistanceGradient)) return -std::numeric_limits<double>::infinity();
   const Vec3 inward{-g[0] / norm, -g[1] / norm, -g[2] / norm};
@@ -234,7 +234,9 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
       // Deep or far, and no record: nothing to do (most particles), decided without the
       // interpolation.
       if (!old && !beyondBand.empty() && beyondBand[stencilBase(liquid.grid, x)]) continue;
-      const double phi = interpolateCellCentres(liquid.liquidDistance, liquid.grid, x);
+      // One set of loads for φ and, if the speed is tested, its gradient.
+      const CellCentreStencil phiAround(liquid.liquidDistance, liquid.grid, x);
+      const double phi = phiAround.value();
       const bool inBand = std::abs(phi) <= band;
       if (!old && !inBand) continue;
       out.tagged += inBand;
@@ -246,8 +248,9 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
         if (!entrains && inBand && speedTest) {
           const Vec3f& vf = liquid.particleVelocities[p];
           const Vec3 v{vf[0], vf[1], vf[2]};
-          entrains = !(range && range->maxDifference(x, v) < boundBelow) &&
-                     relativeSpeedIntoLiquid(liquid, x, v, probe) >= settings.entrainmentSpeed;
+          entrains =
+              !(range && range->maxDifference(x, v) < boundBelow) &&
+              relativeSpeedIntoLiquid(liquid, phiAround, x, v, probe) >= settings.entrainmentSpeed;
         }
         if (entrains) {
           tag.seedBirth = time;
