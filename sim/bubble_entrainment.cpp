@@ -217,6 +217,7 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
   forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
     BlockResult& out = blocks[b];
+    out.tags.reserve(end - begin);  // at most one record per particle: one allocation
     // Each record is looked up kPrefetchAhead particles early and fetched into the cache then;
     // the ring holds what was found until its particle comes.
     std::array<const EntrainmentTag*, kPrefetchAhead> found{};
@@ -272,6 +273,10 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   // Merge in block order; the sorts by id make the result independent of the particles' order.
   EntrainmentStep result;
   std::vector<EntrainmentTag> tags;
+  std::size_t records = 0, seeds = 0;
+  for (const BlockResult& b : blocks) records += b.tags.size(), seeds += b.seeds.size();
+  tags.reserve(records);
+  result.seeds.reserve(seeds);
   for (BlockResult& b : blocks) {
     tags.insert(tags.end(), b.tags.begin(), b.tags.end());
     result.seeds.insert(result.seeds.end(), b.seeds.begin(), b.seeds.end());
