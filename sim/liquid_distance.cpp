@@ -111,7 +111,7 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   // The field starts at ±band (the band of each cell's side), written in the same pass: step 3
   // overwrites the rows the surface points reach.
   if (field_.size() != grid.cells) field_ = Array3f(grid.cells);
-  const float beyond[2] = {static_cast<float>(airBand), static_cast<float>(-band)};  // by liquid
+  const float airBeyond = static_cast<float>(airBand), liquidBeyond = static_cast<float>(-band);
   rowPhases_.resize(static_cast<std::size_t>(nj) * nk);
   const std::size_t rowsPerTask = std::max<std::size_t>(1, kCellsPerTask / sj);
   tbb::parallel_for(
@@ -122,14 +122,19 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
           const std::uint8_t* const solid = solidCells_.data() + row * sj;
           std::uint8_t* const out = phase_.data() + row * sj;
           float* const distance = field_.data() + row * sj;
-          // Without branches (solid is 0 or 1), so that the loop vectorises.
+          // Without branches (solid is 0 or 1), so that the loop vectorises: its length and the
+          // two bands are local copies, which the byte stores cannot alias (read through the
+          // closure, they stopped it).
           std::uint8_t anyAir = 0, anyLiquid = 0, anySolid = 0;
-          for (int i = 0; i < ni; ++i) {
+          const int cells = ni;
+          const float liquidSide = liquidBeyond, airSide = airBeyond;
+          for (int i = 0; i < cells; ++i) {
             const std::uint8_t inSolid = solid[i];
             const std::uint8_t liquid = static_cast<std::uint8_t>(value[i] < 0.0f) & (inSolid ^ 1u);
             out[i] = static_cast<std::uint8_t>(inSolid * kSolid + liquid * kLiquid);
-            distance[i] =
-                beyond[inSolid | liquid];  // not air (liquid or solid): the liquid side's band
+            // Not air (liquid or solid): the liquid side's band (a select: a table lookup does
+            // not vectorise).
+            distance[i] = (inSolid | liquid) ? liquidSide : airSide;
             anySolid |= inSolid;
             anyLiquid |= liquid;
             anyAir |= (inSolid | liquid) ^ 1u;
@@ -164,6 +169,9 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
   tbb::parallel_for(
       tbb::blocked_range<int>(0, nk, planesPerTask), [&](const tbb::blocked_range<int>& r) {
         std::vector<std::uint8_t> crossing(ni);
+        // The row with a solid cell either side: the neighbours beyond the grid's ends.
+        std::vector<std::uint8_t> padded(ni + 2, kSolid);
+        const int cells = ni;  // a local copy, which the byte stores cannot alias
         for (int k = r.begin(); k < r.end(); ++k)
           for (int j = 0; j < nj; ++j) {
             const std::size_t rowAt = k * sk + j * sj;
@@ -185,13 +193,15 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             // Most cells are not next to the surface: first a test without branches on the six
             // neighbours (a neighbour outside the grid reads as solid, which makes no crossing; a
             // solid cell makes none either).
-            for (int i = 0; i < ni; ++i) {
+            std::copy(row, row + cells, padded.begin() + 1);
+            const std::uint8_t* const beside = padded.data() + 1;  // beside[-1], beside[cells]
+            std::uint8_t* const crosses = crossing.data();
+            for (int i = 0; i < cells; ++i) {
               const std::uint8_t other = row[i] == kAir ? kLiquid : kAir;
-              const std::uint8_t left = i > 0 ? row[i - 1] : std::uint8_t{kSolid};
-              const std::uint8_t right = i + 1 < ni ? row[i + 1] : std::uint8_t{kSolid};
-              crossing[i] = (row[i] != kSolid) &
-                            ((left == other) | (right == other) | (down[i] == other) |
-                             (up[i] == other) | (back[i] == other) | (ahead[i] == other));
+              crosses[i] =
+                  (row[i] != kSolid) &
+                  ((beside[i - 1] == other) | (beside[i + 1] == other) | (down[i] == other) |
+                   (up[i] == other) | (back[i] == other) | (ahead[i] == other));
             }
             for (int i = 0; i < ni; ++i) {
               if (!crossing[i]) continue;
