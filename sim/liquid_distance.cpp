@@ -40,6 +40,12 @@ constexpr std::size_t kCellsPerTask = std::size_t{1} << 13;
 /// plane, 157-165 of 4, 138-140 of 8, 195-220 of 16, 250-330 in one task.
 constexpr int kPlanesPerTask = 8;
 
+/// The largest float ≤ x.
+float floatAtMost(double x) {
+  const float f = static_cast<float>(x);
+  return f <= x ? f : std::nextafter(f, -std::numeric_limits<float>::infinity());
+}
+
 /// A cell's phase for the sign and the surface: air, liquid, or solid (counted as liquid in the
 /// sign, and making no surface).
 enum Phase : std::uint8_t { kAir = 0, kLiquid = 1, kSolid = 2 };
@@ -145,7 +151,6 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
       });
   const auto isLiquid = [&](std::size_t at) { return phase_[at] != kAir; };
   // A cell takes the distance to its nearest point when it is within its side's band.
-  const double side[2] = {airBand, band};                    // by isLiquid
   const double band2[2] = {airBand * airBand, band * band};  // by isLiquid
   // The box of cell centres within `band` of a point p, per axis.
   const auto reachOf = [&](const Vec3& p) {
@@ -270,6 +275,12 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
         const std::size_t first = planeStart_[std::max(0, r.begin() - reach)];
         const std::size_t last = planeStart_[std::min(nk, r.end() + reach)];
         std::vector<float> x2(ni);  // a point's (x_i − p_x)² across its box [m²]
+        // For the field, in floats (so that the loop vectorises; the same values as in doubles:
+        // the float sqrt is the double one rounded, and d² ≤ band² holds for a float d² exactly
+        // when it holds against band² rounded down to a float). Local copies, as above.
+        const int cells = ni;
+        const float liquidLimit2 = floatAtMost(band2[1]), airLimit2 = floatAtMost(band2[0]);
+        const float liquidSide = static_cast<float>(band), airSide = static_cast<float>(airBand);
         for (std::size_t q = first; q < last; ++q) {
           const SurfaceCell& s = surface[q];
           const Vec3& p = s.point;
@@ -308,11 +319,12 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
             const float* const nearest2 = &nearest2_[row * sj];
             const std::uint8_t* const phase = &phase_[row * sj];
             float* const out = field_.data() + row * sj;
-            for (int i = 0; i < ni; ++i) {
+            for (int i = 0; i < cells; ++i) {
               const bool liquid = phase[i] != kAir;
-              const double magnitude =
-                  nearest2[i] <= band2[liquid] ? std::sqrt(nearest2[i]) : side[liquid];
-              out[i] = static_cast<float>(liquid ? -magnitude : magnitude);
+              const float magnitude = nearest2[i] <= (liquid ? liquidLimit2 : airLimit2)
+                                          ? std::sqrt(nearest2[i])
+                                          : (liquid ? liquidSide : airSide);
+              out[i] = liquid ? -magnitude : magnitude;
             }
           }
       });
