@@ -39,13 +39,13 @@ class SurfaceDistance {
   ///                           (on the liquid side)
   /// @param airBand            [m], in (0, band]: the same on the air side; 0 for `band`
   /// @throws std::invalid_argument for a band ≤ 0 or an airBand outside (0, band]
-  SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid, double band,
-                  double airBand = 0.0);
+  SurfaceDistance(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
+                  double band, double airBand = 0.0);
 
   /// @brief As the constructor, reusing this object's memory (the bubble model rebuilds the
   ///        distance on every substep).
-  void rebuild(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid, double band,
-               double airBand = 0.0);
+  void rebuild(const Array3f& phi, const Array3f& solidNodeDistance, const GridGeometry& grid,
+               double band, double airBand = 0.0);
 
   /// Signed distance at cell centres [m], exact to the surface points within the band of its side,
   /// −band or +airBand beyond.
@@ -84,22 +84,23 @@ class SurfaceDistance {
   GridGeometry grid_;
   double band_ = 0.0, airBand_ = 0.0;
   Array3f field_;
-  std::vector<Vec3> points_;               ///< surface points, grouped by bucket
-  Index3 buckets_{0, 0, 0};                ///< bucket counts per axis
-  std::vector<std::size_t> bucketStart_;   ///< points of bucket b: [start[b], start[b + 1])
+  std::vector<Vec3> points_;              ///< surface points, grouped by bucket
+  Index3 buckets_{0, 0, 0};               ///< bucket counts per axis
+  std::vector<std::size_t> bucketStart_;  ///< points of bucket b: [start[b], start[b + 1])
   // Per-cell work arrays of rebuild, kept between rebuilds.
   std::vector<std::uint8_t> phase_;
-  std::vector<float> solidNodes_;          ///< the nodal solid distances solidCells_ was found from [m]
-  std::vector<std::uint8_t> solidCells_;   ///< 1 for a cell inside a solid
-  std::vector<std::uint8_t> rowPhases_;    ///< per row of cells (j, k): bit 1 << phase for each phase it holds
-  std::vector<std::uint8_t> solidRow_;     ///< a row of solid phases: the neighbours beyond the grid
-  std::vector<float> nearest2_;            ///< squared distance to the nearest point, in rows reached [m²]
-  std::vector<std::uint8_t> rowReached_;   ///< per row of cells (j, k): 1 once a point reached it
-  std::vector<std::size_t> planeStart_;    ///< surface cells of z-plane k: [start[k], start[k + 1])
-  std::vector<double> centres_[3];         ///< cell-centre coordinate per index, per axis [m]
+  std::vector<float> solidNodes_;  ///< the nodal solid distances solidCells_ was found from [m]
+  std::vector<std::uint8_t> solidCells_;  ///< 1 for a cell inside a solid
+  std::vector<std::uint8_t>
+      rowPhases_;  ///< per row of cells (j, k): bit 1 << phase for each phase it holds
+  std::vector<std::uint8_t> solidRow_;  ///< a row of solid phases: the neighbours beyond the grid
+  std::vector<float> nearest2_;  ///< squared distance to the nearest point, in rows reached [m²]
+  std::vector<std::uint8_t> rowReached_;  ///< per row of cells (j, k): 1 once a point reached it
+  std::vector<std::size_t> planeStart_;   ///< surface cells of z-plane k: [start[k], start[k + 1])
+  std::vector<double> centres_[3];        ///< cell-centre coordinate per index, per axis [m]
   std::vector<std::vector<SurfaceCell>> surfaceOfPlane_;  ///< surface cells found per z-plane
-  std::vector<SurfaceCell> surface_;       ///< all surface cells, in cell order
-  std::vector<std::size_t> bucketNext_;    ///< next free slot per bucket while grouping points
+  std::vector<SurfaceCell> surface_;                      ///< all surface cells, in cell order
+  std::vector<std::size_t> bucketNext_;  ///< next free slot per bucket while grouping points
 };
 
 }  // namespace fluidsound::sim

@@ -25,7 +25,9 @@ Scene liquidInABox(const Vec3& domainMax, const Vec3& liquidMax, double duration
 std::size_t bubblesMade(const Scene& scene, double seconds) {
   FluidSolver solver(scene);
   BubbleModel bubbles(BubbleSettings{}, scene.seed, scene.gravity);
-  const SubstepObserver observer = [&](const LiquidState& liquid, double t, double dt) { bubbles.step(liquid, t, dt); };
+  const SubstepObserver observer = [&](const LiquidState& liquid, double t, double dt) {
+    bubbles.step(liquid, t, dt);
+  };
   for (int frame = 1; frame <= static_cast<int>(seconds * 30.0 + 0.5); ++frame) {
     solver.advanceTo(frame / 30.0, observer);
     bubbles.sampleFrame(solver.time());
@@ -42,9 +44,9 @@ TEST(FluidBubbles, StillTankMakesNoBubble) {
 
 // Claim (issue 6): still water against a curved solid makes no bubble either: a sphere (r = 5 cm)
 // piercing the surface of the still tank, its contact line a circle on a curved wall. Measured:
-// none in 2 s, particles at most 1.1 cm/s, 0.7 cm/s at 2 s (13–23 cm/s and 31 bubbles while the pressure solve
-// counted the sphere's cap above the water as liquid, docs/solver.md). Reference: none may form.
-// Tolerance: exact.
+// none in 2 s, particles at most 1.1 cm/s, 0.7 cm/s at 2 s (13–23 cm/s and 31 bubbles while the
+// pressure solve counted the sphere's cap above the water as liquid, docs/solver.md). Reference:
+// none may form. Tolerance: exact.
 TEST(FluidBubbles, StillTankAroundACurvedSolidMakesNoBubble) {
   Scene scene = liquidInABox({0.16, 0.16, 0.16}, {0.16, 0.0735, 0.16}, 2.0);
   Solid sphere;
@@ -77,9 +79,9 @@ TEST(FluidBubbles, DamBreakMakesBubbles) {
 
 // Claim (issue 6): a pour makes more bubbles the faster it flows. A r = 8 mm nozzle 12 cm above a
 // 6 cm pool (20 cm tank, 1 cm cells) for 1 s at 1, 2 and 3 m/s (flow ∝ speed). Measured: 901,
-// 2138 and 3255 bubbles (2 December 2026). Reference: monotone increase. Tolerance: each count above the previous
-// by 3√(N₁ + N₂), three standard deviations of the difference of two Poisson counts, so the order
-// is not a chance of the random stream.
+// 2138 and 3255 bubbles (2 December 2026). Reference: monotone increase. Tolerance: each count
+// above the previous by 3√(N₁ + N₂), three standard deviations of the difference of two Poisson
+// counts, so the order is not a chance of the random stream.
 TEST(FluidBubbles, PourMakesMoreBubblesAtHigherFlow) {
   std::size_t previous = 0;
   for (const double speed : {1.0, 2.0, 3.0}) {
@@ -93,7 +95,8 @@ TEST(FluidBubbles, PourMakesMoreBubblesAtHigherFlow) {
     scene.emitters.push_back(nozzle);
     const std::size_t count = bubblesMade(scene, 1.0);
     std::cout << "[ measured ] pour at " << speed << " m/s: " << count << " bubbles\n";
-    EXPECT_GT(static_cast<double>(count), previous + 3.0 * std::sqrt(static_cast<double>(count + previous)))
+    EXPECT_GT(static_cast<double>(count),
+              previous + 3.0 * std::sqrt(static_cast<double>(count + previous)))
         << speed << " m/s";
     previous = count;
   }

@@ -34,21 +34,26 @@ Array3f indicator(const GridGeometry& g, const std::function<double(const Vec3&)
   for (int k = 0; k < kCells; ++k)
     for (int j = 0; j < kCells; ++j)
       for (int i = 0; i < kCells; ++i)
-        phi(i, j, k) = static_cast<float>(std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
+        phi(i, j, k) = static_cast<float>(
+            std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
   return phi;
 }
 
-Array3f openNodes(const GridGeometry& g, float value = 1.0f) { return Array3f(g.nodeCount(), value); }
+Array3f openNodes(const GridGeometry& g, float value = 1.0f) {
+  return Array3f(g.nodeCount(), value);
+}
 
 /// A band wider than the grid: the field is the distance everywhere.
 constexpr double kWholeGrid = 1.0;  // [m]
 
 /// Largest |d − exact| over all cells [m].
-double worstError(const Array3f& d, const GridGeometry& g, const std::function<double(const Vec3&)>& exact) {
+double worstError(const Array3f& d, const GridGeometry& g,
+                  const std::function<double(const Vec3&)>& exact) {
   double worst = 0.0;
   for (int k = 0; k < kCells; ++k)
     for (int j = 0; j < kCells; ++j)
-      for (int i = 0; i < kCells; ++i) worst = std::max(worst, std::abs(d(i, j, k) - exact(g.cellCentre(i, j, k))));
+      for (int i = 0; i < kCells; ++i)
+        worst = std::max(worst, std::abs(d(i, j, k) - exact(g.cellCentre(i, j, k))));
   return worst;
 }
 
@@ -88,9 +93,12 @@ TEST(LiquidDistance, TiltedPlaneAndSphereAreAccurateToAFractionOfACell) {
   };
   const Vec3 c{0.08, 0.08, 0.08};
   const double r = 10 * kCell;
-  const auto sphere = [&](const Vec3& x) { return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r; };
+  const auto sphere = [&](const Vec3& x) {
+    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r;
+  };
   for (int shape = 0; shape < 2; ++shape) {
-    const std::function<double(const Vec3&)> exact = shape == 0 ? std::function<double(const Vec3&)>(plane) : sphere;
+    const std::function<double(const Vec3&)> exact =
+        shape == 0 ? std::function<double(const Vec3&)>(plane) : sphere;
     const Array3f d = SurfaceDistance(indicator(g, exact), openNodes(g), g, kWholeGrid).field();
     double worst = 0.0, squares = 0.0;
     int count = 0;
@@ -103,8 +111,8 @@ TEST(LiquidDistance, TiltedPlaneAndSphereAreAccurateToAFractionOfACell) {
           worst = std::max(worst, e), squares += e * e, ++count;
         }
     const double rms = std::sqrt(squares / count);
-    std::cout << "[ measured ] " << (shape == 0 ? "tilted plane" : "sphere") << ": worst " << worst / kCell
-              << " h, rms " << rms / kCell << " h over " << count << " cells\n";
+    std::cout << "[ measured ] " << (shape == 0 ? "tilted plane" : "sphere") << ": worst "
+              << worst / kCell << " h, rms " << rms / kCell << " h over " << count << " cells\n";
     EXPECT_LT(worst, 0.5 * kCell);
     EXPECT_LT(rms, 0.1 * kCell);
   }
@@ -124,14 +132,16 @@ TEST(LiquidDistance, SolidsMakeNoSurface) {
   for (int k = 0; k < kCells; ++k)
     for (int j = 0; j < kCells; ++j)
       for (int i = 0; i < kCells; ++i)
-        if (inBlock(g.cellCentre(i, j, k))) phi(i, j, k) = static_cast<float>(1.5 * kCell);  // "air"
+        if (inBlock(g.cellCentre(i, j, k)))
+          phi(i, j, k) = static_cast<float>(1.5 * kCell);  // "air"
   Array3f nodes(g.nodeCount());
   for (int k = 0; k <= kCells; ++k)
     for (int j = 0; j <= kCells; ++j)
       for (int i = 0; i <= kCells; ++i) {
         const Vec3 x = g.worldFromGrid({1.0 * i, 1.0 * j, 1.0 * k});
         // Distance to the block, negative inside (exact enough for the sign, which is all it sets).
-        const double dx = std::max(0.04 - x[0], x[0] - 0.08), dy = std::max(0.02 - x[1], x[1] - 0.06),
+        const double dx = std::max(0.04 - x[0], x[0] - 0.08),
+                     dy = std::max(0.02 - x[1], x[1] - 0.06),
                      dz = std::max(0.04 - x[2], x[2] - 0.08);
         nodes(i, j, k) = static_cast<float>(std::max({dx, dy, dz}));
       }
@@ -162,17 +172,21 @@ TEST(LiquidDistance, BeyondTheBandTheNearestSurfacePointGivesTheDepth) {
   EXPECT_FLOAT_EQ(flatDistance.field()(10, 2, 10), static_cast<float>(-band));
   const Vec3 c{0.08, 0.08, 0.08};
   const double r = 10 * kCell;
-  const auto sphere = [&](const Vec3& x) { return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r; };
+  const auto sphere = [&](const Vec3& x) {
+    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r;
+  };
   const SurfaceDistance sphereDistance(indicator(g, sphere), openNodes(g), g, band);
   double worstFlat = 0.0, worstSphere = 0.0;
   for (int n = 0; n < 2000; ++n) {  // a fixed quasi-random set of positions (golden-ratio steps)
-    const Vec3 x{0.16 * std::fmod(0.5 + n * 0.6180339887, 1.0), 0.16 * std::fmod(0.5 + n * 0.7548776662, 1.0),
+    const Vec3 x{0.16 * std::fmod(0.5 + n * 0.6180339887, 1.0),
+                 0.16 * std::fmod(0.5 + n * 0.7548776662, 1.0),
                  0.16 * std::fmod(0.5 + n * 0.5698402910, 1.0)};
-    if (flat(x) < -2 * kCell) worstFlat = std::max(worstFlat, std::abs(flatDistance.at(x) - flat(x)));
+    if (flat(x) < -2 * kCell)
+      worstFlat = std::max(worstFlat, std::abs(flatDistance.at(x) - flat(x)));
     worstSphere = std::max(worstSphere, std::abs(sphereDistance.at(x) - sphere(x)));
   }
-  std::cout << "[ measured ] beyond the band: worst error flat " << worstFlat / kCell << " h, sphere "
-            << worstSphere / kCell << " h\n";
+  std::cout << "[ measured ] beyond the band: worst error flat " << worstFlat / kCell
+            << " h, sphere " << worstSphere / kCell << " h\n";
   EXPECT_LT(worstFlat, 0.125 * kCell);
   EXPECT_LT(worstSphere, 0.5 * kCell);
 }
@@ -185,7 +199,9 @@ TEST(LiquidDistance, ANarrowerAirBandClampsOnlyTheAirSide) {
   // reach cells along oblique paths). Tolerance: exact (the same nearest points, cut further out).
   const GridGeometry g = cube();
   const Vec3 c{0.08, 0.08, 0.08};
-  const auto sphere = [&](const Vec3& x) { return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 10 * kCell; };
+  const auto sphere = [&](const Vec3& x) {
+    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 10 * kCell;
+  };
   const Array3f phi = indicator(g, sphere);
   const double band = 6 * kCell, airBand = 3 * kCell;
   const Array3f both = SurfaceDistance(phi, openNodes(g), g, band).field();
@@ -193,7 +209,8 @@ TEST(LiquidDistance, ANarrowerAirBandClampsOnlyTheAirSide) {
   narrow.rebuild(phi, openNodes(g), g, band, airBand);
   int compared = 0;
   for (std::size_t at = 0; at < both.elementCount(); ++at) {
-    const float expected = both.data()[at] < airBand ? both.data()[at] : static_cast<float>(airBand);
+    const float expected =
+        both.data()[at] < airBand ? both.data()[at] : static_cast<float>(airBand);
     ASSERT_EQ(narrow.field().data()[at], expected) << "cell " << at;
     compared += both.data()[at] < 0.0f;
   }
@@ -210,7 +227,9 @@ TEST(LiquidDistance, BandCellsHoldTheDistanceToTheNearestSurfacePoint) {
   // and of the stored value (6e-8 relative), at most 4.75 h: ≤ 7e-7 h.
   const GridGeometry g = cube();
   const Vec3 c{0.081, 0.078, 0.0805};
-  const auto sphere = [&](const Vec3& x) { return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 9.3 * kCell; };
+  const auto sphere = [&](const Vec3& x) {
+    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 9.3 * kCell;
+  };
   const Array3f phi = indicator(g, sphere);
   const double band = 4.75 * kCell, airBand = 2.75 * kCell;
   const SurfaceDistance distance(phi, openNodes(g), g, band, airBand);
@@ -224,7 +243,8 @@ TEST(LiquidDistance, BandCellsHoldTheDistanceToTheNearestSurfacePoint) {
       for (int i = 0; i < kCells; ++i) {
         const Vec3 x = g.cellCentre(i, j, k);
         double nearest = 1e9;
-        for (const Vec3& p : points) nearest = std::min(nearest, std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]));
+        for (const Vec3& p : points)
+          nearest = std::min(nearest, std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]));
         const double side = liquid(i, j, k) ? band : airBand;
         const double expected = std::min(nearest, side);
         const double got = std::abs(distance.field()(i, j, k));
@@ -234,7 +254,8 @@ TEST(LiquidDistance, BandCellsHoldTheDistanceToTheNearestSurfacePoint) {
           for (int step : {-1, 1}) {
             Index3 n{i, j, k};
             n[a] += step;
-            if (n[a] >= 0 && n[a] < kCells && liquid(n[0], n[1], n[2]) != liquid(i, j, k)) nextToSurface = true;
+            if (n[a] >= 0 && n[a] < kCells && liquid(n[0], n[1], n[2]) != liquid(i, j, k))
+              nextToSurface = true;
           }
         if (nextToSurface) {
           EXPECT_GE(got, expected * (1.0 - 1e-6)) << i << " " << j << " " << k;
@@ -243,7 +264,8 @@ TEST(LiquidDistance, BandCellsHoldTheDistanceToTheNearestSurfacePoint) {
         worst = std::max(worst, std::abs(got - expected));
         inBand += nearest < side;
       }
-  std::cout << "[ measured ] " << inBand << " band cells: worst |field − nearest point| " << worst / kCell << " h\n";
+  std::cout << "[ measured ] " << inBand << " band cells: worst |field − nearest point| "
+            << worst / kCell << " h\n";
   EXPECT_GT(inBand, 5000);
   EXPECT_LT(worst, 1e-6 * kCell);
 }
@@ -279,7 +301,8 @@ TEST(LiquidDistance, RebuildingOneObjectGivesWhatAFreshOneGives) {
       for (int j = 0; j <= g.cells[1]; ++j)
         for (int i = 0; i <= g.cells[0]; ++i) {
           const Vec3 x = g.worldFromGrid({1.0 * i, 1.0 * j, 1.0 * k});
-          const double dx = std::max(x0 - x[0], x[0] - (x0 + 0.03)), dy = std::max(0.01 - x[1], x[1] - 0.04),
+          const double dx = std::max(x0 - x[0], x[0] - (x0 + 0.03)),
+                       dy = std::max(0.01 - x[1], x[1] - 0.04),
                        dz = std::max(0.03 - x[2], x[2] - 0.07);
           nodes(i, j, k) = static_cast<float>(std::max({dx, dy, dz}));
         }
@@ -290,7 +313,8 @@ TEST(LiquidDistance, RebuildingOneObjectGivesWhatAFreshOneGives) {
     for (int k = 0; k < g.cells[2]; ++k)
       for (int j = 0; j < g.cells[1]; ++j)
         for (int i = 0; i < g.cells[0]; ++i)
-          phi(i, j, k) = static_cast<float>(std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
+          phi(i, j, k) = static_cast<float>(
+              std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
     return phi;
   };
   const GridGeometry a = cube();
