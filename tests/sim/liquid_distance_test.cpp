@@ -43,6 +43,11 @@ Array3f openNodes(const GridGeometry& g, float value = 1.0f) {
   return Array3f(g.nodeCount(), value);
 }
 
+/// The signed distance to a sphere of liquid, centre c and radius r [m].
+auto liquidSphere(const Vec3& c, double r) {
+  return [c, r](const Vec3& x) { return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r; };
+}
+
 /// A band wider than the grid: the field is the distance everywhere.
 constexpr double kWholeGrid = 1.0;  // [m]
 
@@ -91,11 +96,7 @@ TEST(LiquidDistance, TiltedPlaneAndSphereAreAccurateToAFractionOfACell) {
       if (f < kCell || f > extent - kCell) return false;
     return true;
   };
-  const Vec3 c{0.08, 0.08, 0.08};
-  const double r = 10 * kCell;
-  const auto sphere = [&](const Vec3& x) {
-    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r;
-  };
+  const auto sphere = liquidSphere({0.08, 0.08, 0.08}, 10 * kCell);
   for (int shape = 0; shape < 2; ++shape) {
     const std::function<double(const Vec3&)> exact =
         shape == 0 ? std::function<double(const Vec3&)>(plane) : sphere;
@@ -170,11 +171,7 @@ TEST(LiquidDistance, BeyondTheBandTheNearestSurfacePointGivesTheDepth) {
   const auto flat = [&](const Vec3& x) { return x[1] - s; };
   const SurfaceDistance flatDistance(indicator(g, flat), openNodes(g), g, band);
   EXPECT_FLOAT_EQ(flatDistance.field()(10, 2, 10), static_cast<float>(-band));
-  const Vec3 c{0.08, 0.08, 0.08};
-  const double r = 10 * kCell;
-  const auto sphere = [&](const Vec3& x) {
-    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - r;
-  };
+  const auto sphere = liquidSphere({0.08, 0.08, 0.08}, 10 * kCell);
   const SurfaceDistance sphereDistance(indicator(g, sphere), openNodes(g), g, band);
   double worstFlat = 0.0, worstSphere = 0.0;
   for (int n = 0; n < 2000; ++n) {  // a fixed quasi-random set of positions (golden-ratio steps)
@@ -198,10 +195,7 @@ TEST(LiquidDistance, ANarrowerAirBandClampsOnlyTheAirSide) {
   // Reference: the same field with both bands equal, for a sphere of liquid (curved, so points
   // reach cells along oblique paths). Tolerance: exact (the same nearest points, cut further out).
   const GridGeometry g = cube();
-  const Vec3 c{0.08, 0.08, 0.08};
-  const auto sphere = [&](const Vec3& x) {
-    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 10 * kCell;
-  };
+  const auto sphere = liquidSphere({0.08, 0.08, 0.08}, 10 * kCell);
   const Array3f phi = indicator(g, sphere);
   const double band = 6 * kCell, airBand = 3 * kCell;
   const Array3f both = SurfaceDistance(phi, openNodes(g), g, band).field();
@@ -226,10 +220,7 @@ TEST(LiquidDistance, BandCellsHoldTheDistanceToTheNearestSurfacePoint) {
   // squared distance (three roundings, ≤ 1.8e-7 relative, so ≤ 0.9e-7 relative in the distance)
   // and of the stored value (6e-8 relative), at most 4.75 h: ≤ 7e-7 h.
   const GridGeometry g = cube();
-  const Vec3 c{0.081, 0.078, 0.0805};
-  const auto sphere = [&](const Vec3& x) {
-    return std::hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]) - 9.3 * kCell;
-  };
+  const auto sphere = liquidSphere({0.081, 0.078, 0.0805}, 9.3 * kCell);
   const Array3f phi = indicator(g, sphere);
   const double band = 4.75 * kCell, airBand = 2.75 * kCell;
   const SurfaceDistance distance(phi, openNodes(g), g, band, airBand);
