@@ -57,9 +57,4 @@ double interpolateCellCentres(const Array3f& field, const GridGeometry& grid, co
   return CellCentreStencil(field, grid, p).value();
 }
 
-FieldSample sampleCellCentres(const Array3f& field, const GridGeometry& grid, const Vec3& p) {
-  const CellCentreStencil s(field, grid, p);
-  return {s.value(), s.gradient()};
-}
-
 }  // namespace fluidsound::sim

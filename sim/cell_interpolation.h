@@ -7,12 +7,6 @@
 
 namespace fluidsound::sim {
 
-/// A field's value and gradient at one position.
-struct FieldSample {
-  double value = 0.0;
-  Vec3 gradient{0.0, 0.0, 0.0};  ///< [field unit / m]
-};
-
 /// @brief The 8 cell centres around a world position p [m] and the field's values there, so that
 ///        the interpolant's value and its gradient come from one set of loads. Outside the hull of
 ///        the cell centres the field is extended as a constant (positions are clamped).
@@ -37,9 +31,5 @@ class CellCentreStencil {
 ///        hull of the cell centres the field is extended as a constant (positions are clamped).
 /// @param field  one value per cell, size grid.cells
 double interpolateCellCentres(const Array3f& field, const GridGeometry& grid, const Vec3& p);
-
-/// @brief The same interpolant's value and exact gradient (piecewise constant along each axis
-///        within a cell; zero along an axis where p is clamped).
-FieldSample sampleCellCentres(const Array3f& field, const GridGeometry& grid, const Vec3& p);
 
 }  // namespace fluidsound::sim

@@ -31,7 +31,7 @@ Array3f linearField(const GridGeometry& g, const Vec3& a, double b) {
 
 TEST(CellInterpolation, ALinearFieldIsReproducedWithItsGradient) {
   // Claim: inside the hull of the centres the trilinear interpolant of a linear field is the field
-  // itself and its gradient the field's slope, from the stencil as from the two functions.
+  // itself and its gradient the field's slope; interpolateCellCentres gives the stencil's value.
   // Reference: a·x + b and a. Tolerance: the float storage of the centre values (|f| ≤ 0.2:
   // 1.5e-8 each), i.e. 1e-7 in the value and, over a difference across one cell of 0.01 m, 2e-5
   // in the gradient (of components up to 3).
@@ -47,12 +47,8 @@ TEST(CellInterpolation, ALinearFieldIsReproducedWithItsGradient) {
     const double exact = a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + b;
     EXPECT_NEAR(s.value(), exact, 1e-7);
     EXPECT_EQ(s.value(), interpolateCellCentres(f, g, x));
-    const FieldSample sample = sampleCellCentres(f, g, x);
-    EXPECT_EQ(sample.value, s.value());
-    for (int axis = 0; axis < 3; ++axis) {
+    for (int axis = 0; axis < 3; ++axis)
       EXPECT_NEAR(s.gradient()[axis], a[axis], 2e-5) << "axis " << axis;
-      EXPECT_EQ(sample.gradient[axis], s.gradient()[axis]);
-    }
   }
 }
 
