@@ -5,7 +5,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -305,8 +304,8 @@ void SurfaceDistance::rebuild(const Array3f& phi, const Array3f& solidNodeDistan
               // In floats, four cells to a vector register: 1e-7 relative, far below the O(h) of
               // the points' placement.
               const float yz2 = static_cast<float>(y2 + z2);
-              float* const cells = nearest2 + i0;
-              for (int i = 0; i < width; ++i) cells[i] = std::min(cells[i], x2[i] + yz2);
+              float* const inBox = nearest2 + i0;  // the row's cells in the point's box
+              for (int i = 0; i < width; ++i) inBox[i] = std::min(inBox[i], x2[i] + yz2);
             }
           }
         }
