@@ -243,9 +243,11 @@ int runRunCommand(const RunOptions& o) {
   report["run"] = run;
   // The run's report.json is simulate's plus `run`: recorded as made from simulate's, so that
   // simulate's artefact still counts as intact next time.
-  const io::FileDigest simulateReport = records.recordedArtefact("simulate", "report.json").value();
+  const std::optional<io::FileDigest> simulateReport =
+      records.recordedArtefact("simulate", "report.json");
   io::writeTextFile(out / "report.json", report.dump(2) + "\n");
-  records.complete("report", hash, {{"report.json", simulateReport}}, {"report.json"});
+  if (simulateReport)
+    records.complete("report", hash, {{"report.json", *simulateReport}}, {"report.json"});
   if (!o.common.quiet)
     std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
                  (out / audioName(scene.file)).string().c_str(), run["seconds"].get<double>());

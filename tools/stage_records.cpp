@@ -5,7 +5,6 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <utility>
 
 #include "io/text_file.h"
@@ -154,18 +153,18 @@ void StageRecords::forget(const std::string& stage) {
   if (records_.erase(stage) > 0 || ignoredOnDisk_) write();
 }
 
-void StageRecords::complete(const std::string& stage, const std::string& inputHash,
+bool StageRecords::complete(const std::string& stage, const std::string& inputHash,
                             FileDigests reads, const std::vector<std::string>& artefacts) {
   StageRecord record{inputHash, std::move(reads), {}};
   current_.clear();  // the stage may have changed any file
   for (const std::string& file : artefacts) {
     const std::optional<io::FileDigest> digest = currentDigest(file);
-    if (!digest)
-      throw std::logic_error("run: stage " + stage + " completed without writing " + file);
+    if (!digest) return false;
     record.artefacts[file] = *digest;
   }
   records_[stage] = std::move(record);
   write();
+  return true;
 }
 
 void StageRecords::write() {

@@ -63,10 +63,12 @@ class StageRecords {
   void forget(const std::string& stage);
 
   /// @brief Records `stage` as completed with `inputHash`, `reads` (digests taken before it ran)
-  ///        and the digests of `artefacts` as they are now; rewrites stages.json.
-  /// @throws std::logic_error if an artefact is missing (the stage did not write what it should)
+  ///        and the digests of `artefacts` as they are now; rewrites stages.json. An artefact
+  ///        that is not a regular file now (written through a link to a device, say) cannot be
+  ///        checked later, so then nothing is recorded and the stage will run again.
+  /// @return whether the stage was recorded
   /// @throws io::OutputError if stages.json cannot be written
-  void complete(const std::string& stage, const std::string& inputHash, FileDigests reads,
+  bool complete(const std::string& stage, const std::string& inputHash, FileDigests reads,
                 const std::vector<std::string>& artefacts);
 
  private:
