@@ -172,7 +172,7 @@ int runRunCommand(const RunOptions& o) {
   // read and wrote, so that an interrupted or damaged run redoes exactly the stages it must.
   const auto runStage = [&](const char* name, const std::vector<std::string>& reads,
                             const auto& body, const std::vector<std::string>& artefacts) {
-    const std::string reason = records.reasonToRun(name, hash);
+    const std::string reason = records.reasonToRun(name, hash, reads, artefacts);
     const auto t0 = Clock::now();
     if (!reason.empty()) {
       if (!o.common.quiet) std::fprintf(stderr, "run: %s (%s)\n", name, reason.c_str());

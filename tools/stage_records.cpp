@@ -70,8 +70,8 @@ StageRecords::StageRecords(std::filesystem::path outdir, std::vector<std::string
   std::ifstream in(path, std::ios::binary);
   const Json root =
       Json::parse(std::string(std::istreambuf_iterator<char>(in), {}), nullptr, false);
-  if (!root.is_object() || root.value("format", "") != kFormatTag || !root.contains("stages") ||
-      !root["stages"].is_object())
+  if (!root.is_object() || !root.contains("format") || root["format"] != kFormatTag ||
+      !root.contains("stages") || !root["stages"].is_object())
     return;
   for (const std::string& stage : order_)
     if (root["stages"].contains(stage))
@@ -123,23 +123,28 @@ std::vector<io::FileDigest> StageRecords::acceptedVersions(const std::string& st
   return accepted;
 }
 
-std::string StageRecords::reasonToRun(const std::string& stage, const std::string& inputHash) {
+std::string StageRecords::reasonToRun(const std::string& stage, const std::string& inputHash,
+                                      const std::vector<std::string>& reads,
+                                      const std::vector<std::string>& artefacts) {
   const auto found = records_.find(stage);
   if (found == records_.end()) return "no record of it completing";
   const StageRecord& record = found->second;
   if (record.inputHash != inputHash)
     return "its inputs changed (scene, meshes, cell size or program version)";
   const auto self = std::find(order_.begin(), order_.end(), stage);
-  for (const auto& [file, digest] : record.reads) {
+  for (const std::string& file : reads) {
+    const auto read = record.reads.find(file);
+    if (read == record.reads.end()) return "its record does not list its input " + file;
     // The file as the last earlier stage that wrote it recorded it; else as it is now.
     std::optional<io::FileDigest> expected;
     for (auto earlier = self; earlier != order_.begin() && !expected;)
       expected = recordedArtefact(*--earlier, file);
     if (!expected) expected = currentDigest(file);
     if (!expected) return "its input " + file + " is missing";
-    if (*expected != digest) return "its input " + file + " changed";
+    if (*expected != read->second) return "its input " + file + " changed";
   }
-  for (const auto& [file, digest] : record.artefacts) {
+  for (const std::string& file : artefacts) {
+    if (!record.artefacts.contains(file)) return "its record does not list " + file;
     const std::optional<io::FileDigest> now = currentDigest(file);
     if (!now) return file + " is missing";
     const std::vector<io::FileDigest> accepted = acceptedVersions(stage, file);

@@ -35,11 +35,14 @@ class StageRecords {
   StageRecords(std::filesystem::path outdir, std::vector<std::string> order, bool ignore);
 
   /// @brief Why `stage` must run, or an empty string if it can be reused: it has a record with
-  ///        `inputHash`, each file it read is as the stage before it that produced that file
-  ///        recorded it (or, for a file no stage produced, as it is now), and each artefact is
-  ///        present and unchanged. Call in stage order, after the earlier stages ran or were
-  ///        reused.
-  std::string reasonToRun(const std::string& stage, const std::string& inputHash);
+  ///        `inputHash` that lists every file of `reads` and `artefacts` (the files the stage
+  ///        reads and writes this time; names the record has beyond them are not looked at), each
+  ///        file it read is as the stage before it that produced that file recorded it (or, for a
+  ///        file no stage produced, as it is now), and each artefact is present and unchanged.
+  ///        Call in stage order, after the earlier stages ran or were reused.
+  std::string reasonToRun(const std::string& stage, const std::string& inputHash,
+                          const std::vector<std::string>& reads,
+                          const std::vector<std::string>& artefacts);
 
   /// The digest of `file` now (cached until the next complete()); none if it is not a readable
   /// file.

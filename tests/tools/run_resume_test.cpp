@@ -175,6 +175,30 @@ TEST_F(RunResume, AChangedTransferReportRunsTransferOnce) {
   expectSettled(out);
 }
 
+// stages.json is only trusted for what it records: one of another shape (a number as its format)
+// counts as no record, and a record that does not list an artefact the stage writes is not taken
+// to cover it; neither ends in an internal error.
+TEST_F(RunResume, ADamagedStageRecordIsNotTrusted) {
+  const TempFolder folder;
+  const fs::path out = copyOfReference(folder);
+  std::ofstream(out / "stages.json") << R"({"format": 5, "stages": []})";
+  CommandOutcome r = run(out);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(stagesRun(out), "simulate transfer synth") << r.err;
+
+  nlohmann::json stages = nlohmann::json::parse(readText(out / "stages.json"));
+  stages["stages"]["simulate"]["artefacts"].erase("frames/0007.vdb");
+  std::ofstream(out / "stages.json") << stages.dump();
+  fs::remove(out / "frames" / "0007.vdb");
+  r = run(out);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(stagesRun(out), "simulate transfer") << r.err;
+  EXPECT_NE(r.err.find("run: simulate (its record does not list frames/0007.vdb)"),
+            std::string::npos)
+      << r.err;
+  expectReferenceSamples(out);
+}
+
 /// Starts `fluidsound run SCENE -o OUT --quiet` and kills it (SIGKILL) once frame `k` is on disk.
 /// @return whether it was killed (false if it ended first)
 bool killRunAtFrame(const fs::path& scene, const fs::path& out, int k) {
