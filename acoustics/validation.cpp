@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
 
 #include "acoustics/bubble_oscillator.h"
 #include "acoustics/depth_shift.h"
+#include "acoustics/instantaneous_frequency.h"
 #include "acoustics/oscillator_bank.h"
 #include "acoustics/tone_analysis.h"
 
@@ -53,7 +55,7 @@ std::string radiusLabel(double radius) {
 ValidationRow relativeRow(std::string check, std::string reference, double measured,
                           double expected, double tolerance, std::string unit) {
   ValidationRow row{std::move(check), std::move(reference), measured, expected, tolerance, false,
-                    std::move(unit), false};
+                    std::move(unit), false, {}};
   row.pass = std::isfinite(measured) && std::fabs(measured - expected) <= tolerance * std::fabs(expected);
   return row;
 }
@@ -61,9 +63,53 @@ ValidationRow relativeRow(std::string check, std::string reference, double measu
 ValidationRow absoluteRow(std::string check, std::string reference, double measured,
                           double expected, double tolerance, std::string unit) {
   ValidationRow row{std::move(check), std::move(reference), measured, expected, tolerance, true,
-                    std::move(unit), false};
+                    std::move(unit), false, {}};
   row.pass = std::isfinite(measured) && std::fabs(measured - expected) <= tolerance;
   return row;
+}
+
+/// `measure()`, or `fallback` when the estimator cannot measure the signal (silent: the bubble was
+/// dropped; too short; not finite): the first such reason goes to `why`, and the rows built on the
+/// fallback (NaN) fail and carry it, instead of the validation stopping with an internal error.
+template <class T, class Measure>
+T measuredOr(T fallback, const Measure& measure, std::string& why) {
+  try {
+    return measure();
+  } catch (const std::invalid_argument& e) {
+    if (why.empty()) why = std::string("not measured: ") + e.what();
+    return fallback;
+  }
+}
+
+/// Why a render cannot be measured: silent (the synthesizer dropped the bubble) or not finite.
+std::string renderProblem(const std::vector<float>& x) {
+  if (std::any_of(x.begin(), x.end(), [](float v) { return !std::isfinite(v); }))
+    return "not measured: the render is not finite (the excitation overflows float samples)";
+  if (std::all_of(x.begin(), x.end(), [](float v) { return v == 0.0f; }))
+    return "not measured: the render is silent (the synthesizer dropped the bubble: its pitch reaches Nyquist)";
+  return {};
+}
+
+/// Gives `why` to the rows from `first` on whose measurement is not a number.
+void explainUnmeasured(std::vector<ValidationRow>& rows, std::size_t first, const std::string& why) {
+  for (std::size_t i = first; i < rows.size(); ++i)
+    if (!std::isfinite(rows[i].measured) && rows[i].note.empty()) rows[i].note = why.empty() ? "not measured" : why;
+}
+
+/// The settings of the checks whose estimators assume a steady pitch (FFT peak, matrix pencil,
+/// fixed-frequency amplitude fit, ratio of FFT peaks): the chirp off, every other choice kept. The
+/// chirp only multiplies the phase rate by C(t) (docs/synthesis.md), so ω₀, β, A and the depth
+/// factor these rows check are the same with it; chirpRow() checks C(t) itself.
+SynthesisSettings steadyPitch(const SynthesisSettings& s) {
+  SynthesisSettings steady = s;
+  steady.model.chirp = false;
+  return steady;
+}
+
+/// Marks the rows from `first` on as run with the chirp off, when the requested model has it on.
+void markSteadyPitch(std::vector<ValidationRow>& rows, std::size_t first, const SynthesisSettings& requested) {
+  if (!requested.model.chirp) return;
+  for (std::size_t i = first; i < rows.size(); ++i) rows[i].check += " (chirp off)";
 }
 
 bool isAdiabaticDefault(const OscillatorModel& m) {
@@ -92,19 +138,22 @@ BubbleTrack singleBubble(double radius, double birth, std::optional<double> dept
 
 void deepBubbleRows(const ReferenceBubble& ref, const SynthesisSettings& s,
                     std::vector<ValidationRow>& rows) {
+  const std::size_t first = rows.size();
   const OscillatorConstants c =
       bubbleOscillator(ref.radius, s.liquid.ambientPressure, s.liquid, s.model);
   const std::vector<float> x = renderSingleBubble(ref.radius, std::nullopt, 1.0, s);
   const std::string r = radiusLabel(ref.radius);
-  const double f = fftPeakFrequency(x, s.sampleRate);
+  std::string why;
+  const double f = measuredOr(NAN, [&] { return fftPeakFrequency(x, s.sampleRate); }, why);
   rows.push_back(relativeRow("frequency " + r, "model f_d", f, dampedFrequency(c), kFrequencyTolerance, "Hz"));
   if (isAdiabaticDefault(s.model))
     rows.push_back(relativeRow("frequency " + r, "T1 sigma, kappa=gamma", f, ref.fAdiabatic, kFrequencyTolerance, "Hz"));
   if (isThermalDefault(s.model))
     rows.push_back(relativeRow("frequency " + r, "T1 sigma, kappa_eff", f, ref.fThermal, kFrequencyTolerance, "Hz"));
 
-  const DampedToneEstimate pencil = matrixPencilEstimate(x, s.sampleRate);
-  const double hilbert = hilbertDecayRate(x, s.sampleRate, f);
+  const DampedToneEstimate pencil =
+      measuredOr(DampedToneEstimate{NAN, NAN}, [&] { return matrixPencilEstimate(x, s.sampleRate); }, why);
+  const double hilbert = measuredOr(NAN, [&] { return hilbertDecayRate(x, s.sampleRate, f); }, why);
   rows.push_back(relativeRow("decay (matrix pencil) " + r, "model beta", pencil.decayRate, c.decayRate, kDecayTolerance, "1/s"));
   rows.push_back(relativeRow("decay (Hilbert) " + r, "model beta", hilbert, c.decayRate, kDecayTolerance, "1/s"));
   if (s.model.damping == DampingModel::VanDenDoel)
@@ -118,19 +167,27 @@ void deepBubbleRows(const ReferenceBubble& ref, const SynthesisSettings& s,
   rows.push_back(relativeRow("amplitude at 1 m " + r, "model excitation", amplitude, c.amplitude, kAmplitudeTolerance, "Pa"));
   if (isAdiabaticDefault(s.model) && s.model.excitation == ExcitationModel::NeckCollapseJet)
     rows.push_back(relativeRow("amplitude at 1 m " + r, "T7 jet p(1 m)", amplitude, ref.jetPressure, kAmplitudeTolerance, "Pa"));
+  explainUnmeasured(rows, first, why);
 }
 
 void depthShiftRows(const SynthesisSettings& s, std::vector<ValidationRow>& rows) {
   for (const double radius : {1e-3, 2e-3}) {
-    const double deep = fftPeakFrequency(renderSingleBubble(radius, std::nullopt, 1.0, s), s.sampleRate);
+    const std::size_t first = rows.size();
+    std::string why;
+    const auto peak = [&](std::optional<double> depth) {
+      const std::vector<float> x = renderSingleBubble(radius, depth, 1.0, s);
+      return measuredOr(NAN, [&] { return fftPeakFrequency(x, s.sampleRate); }, why);
+    };
+    const double deep = peak(std::nullopt);
     for (const double depthOverRadius : {1.5, 2.0, 5.0}) {
       const double depth = depthOverRadius * radius;
-      const double shifted = fftPeakFrequency(renderSingleBubble(radius, depth, 1.0, s), s.sampleRate);
+      const double shifted = peak(depth);
       char check[96];
       std::snprintf(check, sizeof check, "depth shift %s h=%gR", radiusLabel(radius).c_str(), depthOverRadius);
       rows.push_back(relativeRow(check, "Strasberg (1-x-x^4)^-1/2", shifted / deep,
                                  freeSurfaceFrequencyRatio(radius, depth), kShiftTolerance, "f/f_inf"));
     }
+    explainUnmeasured(rows, first, why);
   }
 }
 
@@ -140,11 +197,14 @@ void cutoffRow(const SynthesisSettings& s, std::vector<ValidationRow>& rows) {
   SynthesisSettings open = s;
   open.duration = 2.0 * decayTime(c.decayRate, s.cutoffDecibels);  // room after the cut-off
   const std::vector<float> x = renderSingleBubble(radius, std::nullopt, 1.0, open);
-  std::size_t last = 0;
+  std::optional<std::size_t> last;
   for (std::size_t n = 0; n < x.size(); ++n)
     if (x[n] != 0.0f) last = n;
-  rows.push_back(absoluteRow("-90 dB cut-off R=1 mm", "(90/20) ln10 / beta", static_cast<double>(last + 1) / s.sampleRate,
+  const std::string why = renderProblem(x);
+  rows.push_back(absoluteRow("-90 dB cut-off R=1 mm", "(90/20) ln10 / beta",
+                             why.empty() ? static_cast<double>(*last + 1) / s.sampleRate : NAN,
                              decayTime(c.decayRate, s.cutoffDecibels), kBlockSamples / s.sampleRate, "s"));
+  explainUnmeasured(rows, rows.size() - 1, why);
 }
 
 double maxAbs(const std::vector<float>& x) {
@@ -165,7 +225,10 @@ void linearityRows(const SynthesisSettings& s, std::vector<ValidationRow>& rows)
   double err = 0.0;
   for (std::size_t n = 0; n < xab.size(); ++n)
     err = std::max(err, std::fabs(static_cast<double>(xab[n]) - (static_cast<double>(xa[n]) + xb[n])));
-  rows.push_back(absoluteRow("superposition of two bubbles", "x_ab = x_a + x_b", err / maxAbs(xab), 0.0, kLinearityTolerance, "rel. to peak"));
+  const std::string whyAb = renderProblem(xab);
+  rows.push_back(absoluteRow("superposition of two bubbles", "x_ab = x_a + x_b",
+                             whyAb.empty() ? err / maxAbs(xab) : NAN, 0.0, kLinearityTolerance, "rel. to peak"));
+  explainUnmeasured(rows, rows.size() - 1, whyAb);
 
   constexpr double k = 0.37;  // any factor: the transfer enters linearly
   constexpr double depth = 0.05;  // the same track for both; only the transfer differs
@@ -173,17 +236,26 @@ void linearityRows(const SynthesisSettings& s, std::vector<ValidationRow>& rows)
   const auto xk = renderSingleBubble(1e-3, depth, k, fixed);
   double errK = 0.0;
   for (std::size_t n = 0; n < x1.size(); ++n) errK = std::max(errK, std::fabs(xk[n] - k * x1[n]));
-  rows.push_back(absoluteRow("transfer scaling x0.37", "x_k = k x_1", errK / (k * maxAbs(x1)), 0.0, kLinearityTolerance, "rel. to peak"));
+  const std::string whyK = renderProblem(x1);
+  rows.push_back(absoluteRow("transfer scaling x0.37", "x_k = k x_1",
+                             whyK.empty() ? errK / (k * maxAbs(x1)) : NAN, 0.0, kLinearityTolerance, "rel. to peak"));
+  explainUnmeasured(rows, rows.size() - 1, whyK);
 }
 
-/// Radius [m] whose deep damped frequency is exactly Nyquist under the settings (bisection on
-/// f_d(R), which falls monotonically with R).
+/// Radius [m] whose deep bubble's highest frequency is exactly Nyquist under the settings: the
+/// synthesizer's own criterion (instantaneous_frequency.h: the damped frequency, times the chirp at
+/// the cut-off when the chirp is on), by bisection, as it falls monotonically with R.
 double nyquistRadius(double sampleRate, const SynthesisSettings& s) {
+  const auto peakFrequency = [&s](double radius) {
+    BubbleTrack deep;
+    deep.radius = radius;
+    const RingingBubble ringing = ringingBubble(deep, s.liquid, s.model);
+    return peakAngularFrequency(ringing, deep, s.cutoffDecibels, s.liquid, s.model) / (2.0 * std::numbers::pi);
+  };
   double small = 1e-6, large = 1e-2;
   for (int i = 0; i < 100; ++i) {
     const double mid = std::sqrt(small * large);
-    const double f = dampedFrequency(bubbleOscillator(mid, s.liquid.ambientPressure, s.liquid, s.model));
-    (f > sampleRate / 2 ? small : large) = mid;
+    (peakFrequency(mid) > sampleRate / 2 ? small : large) = mid;
   }
   return std::sqrt(small * large);
 }
@@ -196,7 +268,7 @@ void nyquistRows(const SynthesisSettings& s, std::vector<ValidationRow>& rows) {
     const double threshold = nyquistRadius(rate, s);
     char check[96];
     std::snprintf(check, sizeof check, "Nyquist radius at %g kHz", rate / 1000);
-    if (isAdiabaticDefault(s.model))
+    if (isAdiabaticDefault(s.model) && !s.model.chirp)  // the table is for a steady pitch
       rows.push_back(relativeRow(check, "physics.md section 3", threshold, tableRadius, kThresholdTolerance, "m"));
     // One bubble 2 % below the threshold radius must be dropped, one 2 % above kept.
     BubbleTrackSet set;
@@ -224,6 +296,7 @@ void chirpRow(const SynthesisSettings& s, std::vector<ValidationRow>& rows) {
   const double measured = at == f.end() ? NAN : at->frequency / dampedFrequency(c);
   rows.push_back(relativeRow("chirp rise at -60 dB R=1 mm", "1 + xi ln 1000", measured,
                              1.0 + chirp.model.chirpRiseFactor * std::log(1000.0), kChirpTolerance, "f/f0"));
+  explainUnmeasured(rows, rows.size() - 1, "not measured: no rising zero crossings in the render");
 }
 
 }  // namespace
@@ -256,11 +329,16 @@ std::vector<ValidationRow> validateBubbleAcoustics(const SynthesisSettings& sett
   const auto step = [&] {
     if (progress) progress(++done / steps);
   };
+  const SynthesisSettings steady = steadyPitch(settings);
   for (const ReferenceBubble& ref : kReference) {
-    deepBubbleRows(ref, settings, rows);
+    const std::size_t first = rows.size();
+    deepBubbleRows(ref, steady, rows);
+    markSteadyPitch(rows, first, settings);
     step();
   }
-  depthShiftRows(settings, rows);
+  const std::size_t shiftRows = rows.size();
+  depthShiftRows(steady, rows);
+  markSteadyPitch(rows, shiftRows, settings);
   step();
   cutoffRow(settings, rows);
   step();

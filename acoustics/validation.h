@@ -21,6 +21,7 @@ struct ValidationRow {
   bool absolute = false;
   std::string unit;       ///< unit of measured and expected
   bool pass = false;
+  std::string note;       ///< why `measured` is not a number (e.g. the bubble was dropped), if so
 };
 
 /// @brief Renders one bubble born at t = 0 through synthesize() and returns its pressure [Pa].
@@ -35,7 +36,11 @@ double fitDampedSineAmplitude(const std::vector<float>& x, double sampleRate, do
 
 /// @brief Every check of the validation matrix that applies to settings.model: frequency and
 ///        decay of deep bubbles (0.25–5 mm), free-surface shift at h = 1.5, 2, 5 R, the −90 dB
-///        cut-off, linearity, the Nyquist guard, excitation amplitude and (with chirp) the chirp.
+///        cut-off, linearity, the Nyquist guard, excitation amplitude and the chirp. With the
+///        chirp on, the checks whose estimators assume a steady pitch (deep bubbles, depth shift)
+///        render with it off and say so ("(chirp off)"). A signal an estimator cannot measure
+///        (e.g. a bubble dropped above Nyquist) gives a failed row with a `note`, never an
+///        exception.
 std::vector<ValidationRow> validateBubbleAcoustics(const SynthesisSettings& settings,
                                                    const ProgressCallback& progress = {});
 

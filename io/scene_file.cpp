@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "acoustics/oscillator_bank.h"
 #include "io/json_validation.h"
 #include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
@@ -226,6 +227,11 @@ class SceneReader {
     }
     if (items->empty())
       check_.fail("listeners", expected + " (omit it for the default)", "an empty array");
+    // One output channel each: the synthesizer renders at most kMaxListeners (oscillator_bank.h),
+    // so more must fail here, before the simulation, not in synth after it.
+    if (items->size() > static_cast<std::size_t>(acoustics::kMaxListeners))
+      check_.fail("listeners", "at most " + std::to_string(acoustics::kMaxListeners) + " listeners (one channel each)",
+                  std::to_string(items->size()) + " listeners");
     std::vector<sim::Listener> out;
     for (std::size_t i = 0; i < items->size(); ++i) {
       const json& item = (*items)[i];

@@ -8,9 +8,11 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -20,6 +22,8 @@
 #include "acoustics/spectrum_statistics.h"
 #include "io/audio_file.h"
 #include "io/bubble_track_file.h"
+#include "io/file_digest.h"
+#include "io/frame_folder.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
@@ -27,6 +31,7 @@
 #include "tools/solver_memory.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
+#include "tools/stage_records.h"
 #include "tools/synth_command.h"
 #include "tools/transfer_command.h"
 
@@ -46,12 +51,6 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
 namespace {
 using Json = nlohmann::ordered_json;
 
-/// FNV-1a 64 over bytes, continuing from `hash`.
-std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash = 0xcbf29ce484222325ull) {
-  for (const unsigned char c : bytes) hash = (hash ^ c) * 0x100000001b3ull;
-  return hash;
-}
-
 std::string fileBytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -60,26 +59,25 @@ std::string fileBytes(const std::filesystem::path& path) {
 /// The inputs' fingerprint: the scene file, the grid cell size it runs at (the file's or
 /// --cell's), every mesh it names and the program's version.
 std::string inputHash(const sim::Scene& scene) {
-  std::uint64_t h = fnv1a(fileBytes(scene.file));
+  std::uint64_t h = io::fnv1a64(fileBytes(scene.file));
   char cell[40];
   std::snprintf(cell, sizeof cell, "cell %.17g m", scene.domain.cell);
-  h = fnv1a(cell, h);
+  h = io::fnv1a64(cell, h);
   const auto addMesh = [&h](const sim::Shape& shape) {
-    if (const auto* mesh = std::get_if<sim::MeshFile>(&shape)) h = fnv1a(fileBytes(mesh->file), h);
+    if (const auto* mesh = std::get_if<sim::MeshFile>(&shape))
+      h = io::fnv1a64(fileBytes(mesh->file), h);
   };
   for (const sim::LiquidRegion& r : scene.liquid) addMesh(r.shape);
   for (const sim::Solid& s : scene.solids) addMesh(s.shape);
-  h = fnv1a(versionText(), h);
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-  return text;
+  return io::hexDigits(io::fnv1a64(versionText(), h));
 }
 
-/// OUTDIR/stages.json: the input hash each stage last completed with.
-Json readStages(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path)) return Json::object();
-  const Json stages = Json::parse(fileBytes(path), nullptr, false);
-  return stages.is_object() ? stages : Json::object();
+/// The frames simulate writes for `run` (all of them, VDB only), named relative to OUTDIR.
+std::vector<std::string> frameFiles(const sim::Scene& scene) {
+  const int last = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
+  std::vector<std::string> files;
+  for (int f = 0; f <= last; ++f) files.push_back("frames/" + io::frameFileName(f, "vdb"));
+  return files;
 }
 
 /// The name of the audio file: the scene file's name without `.json` and `.scene`.
@@ -87,6 +85,19 @@ std::string audioName(const std::filesystem::path& scene) {
   std::string stem = scene.stem().string();
   if (stem.size() > 6 && stem.ends_with(".scene")) stem.resize(stem.size() - 6);
   return stem + ".wav";
+}
+
+/// Checks, before the first frame, that each file the run writes into an existing OUTDIR could be
+/// written (a new OUTDIR is made by simulate), so that no later stage fails on it after the
+/// simulation.
+void requireRunOutputs(const std::filesystem::path& out, const std::string& audio) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(out, ec)) return;
+  for (const std::string& name :
+       {std::string("stages.json"), std::string("report.json"), std::string("bubbles.json"),
+        std::string("transfer.report.json"), audio, std::string("spectrogram.png"),
+        std::string("synth.report.json")})
+    io::requireWritableFolder(out / name);
 }
 
 /// Bubble counts by radius, 10 log-spaced bins from 0.1 to 10 mm (radii outside go to the ends).
@@ -151,36 +162,44 @@ int runRunCommand(const RunOptions& o) {
   const sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   const std::string hash = inputHash(scene);
-  const std::filesystem::path out = o.output, stagesPath = out / "stages.json";
-  Json stages = o.fresh ? Json::object() : readStages(stagesPath);
+  const std::filesystem::path out = o.output;
+  const std::string audio = audioName(scene.file);
+  requireRunOutputs(out, audio);
+  StageRecords records(out, {"simulate", "transfer", "synth", "report"}, o.fresh);
   Json stageReport = Json::object();
-  bool upstreamRan = false;
-  // Runs `stage` unless its artefacts are up to date (same inputs, no earlier stage ran again),
-  // then records its completion, so that an interrupted run resumes at the first unfinished stage.
-  const auto runStage = [&](const char* name, const auto& body, std::initializer_list<std::string> artefacts) {
-    bool present = true;
-    for (const std::string& a : artefacts) present = present && std::filesystem::exists(out / a);
-    const bool reuse = !upstreamRan && present && stages.value(name, "") == hash;
+  // Runs `stage` unless its record shows it complete (stage_records.h: same inputs, the files it
+  // reads as their producer left them, every artefact present and unchanged), then records what it
+  // read and wrote, so that an interrupted or damaged run redoes exactly the stages it must.
+  const auto runStage = [&](const char* name, const std::vector<std::string>& reads,
+                            const auto& body, const std::vector<std::string>& artefacts) {
+    const std::string reason = records.reasonToRun(name, hash, reads, artefacts);
     const auto t0 = Clock::now();
-    if (!reuse) {
-      if (!o.common.quiet) std::fprintf(stderr, "run: %s\n", name);
+    if (!reason.empty()) {
+      if (!o.common.quiet) std::fprintf(stderr, "run: %s (%s)\n", name, reason.c_str());
+      FileDigests before;  // taken first: transfer rewrites the bubbles.json it reads
+      for (const std::string& file : reads)
+        if (const auto digest = records.inputDigest(name, file)) before[file] = *digest;
+      records.forget(name);
       body();
-      stages[name] = hash;
-      std::filesystem::create_directories(out);
-      io::writeTextFile(stagesPath, stages.dump(2) + "\n");
-      upstreamRan = true;
+      records.complete(name, hash, std::move(before), artefacts);
     } else if (!o.common.quiet) {
       std::fprintf(stderr, "run: %s — up to date, reused\n", name);
     }
-    stageReport[name] = {{"reused", reuse}, {"seconds", std::chrono::duration<double>(Clock::now() - t0).count()}};
+    stageReport[name] = {{"reused", reason.empty()},
+                         {"seconds", std::chrono::duration<double>(Clock::now() - t0).count()}};
+    if (!reason.empty()) stageReport[name]["reason"] = reason;
   };
+  const std::vector<std::string> frames = frameFiles(scene);
 
   SimulateOptions simulate;
   simulate.common = o.common;
   simulate.scene = o.scene;
   simulate.output = o.output;
   simulate.cell = o.cell;
-  runStage("simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"});
+  std::vector<std::string> simulated = frames;
+  simulated.insert(simulated.end(), {"bubbles.json", "report.json"});
+  runStage(
+      "simulate", {}, [&] { runSimulateCommand(simulate); }, simulated);
   // simulate's report.json is the base of the run's report; read it before later stages change
   // anything (a reused simulation keeps its own).
   Json report = Json::parse(fileBytes(out / "report.json"), nullptr, false);
@@ -190,7 +209,10 @@ int runRunCommand(const RunOptions& o) {
   transfer.common = o.common;
   transfer.scene = o.scene;
   transfer.output = o.output;
-  runStage("transfer", [&] { runTransferCommand(transfer); }, {"transfer.report.json"});
+  std::vector<std::string> transferReads = frames;
+  transferReads.push_back("bubbles.json");
+  runStage("transfer", transferReads, [&] { runTransferCommand(transfer); },
+           {"bubbles.json", "transfer.report.json"});
 
   SynthOptions synth;
   synth.common = o.common;
@@ -198,7 +220,8 @@ int runRunCommand(const RunOptions& o) {
   synth.output = (out / audioName(scene.file)).string();
   synth.spectrogram = (out / "spectrogram.png").string();
   synth.report = (out / "synth.report.json").string();
-  runStage("synth", [&] { runSynthCommand(synth); }, {audioName(scene.file), "spectrogram.png", "synth.report.json"});
+  runStage("synth", {"bubbles.json"}, [&] { runSynthCommand(synth); },
+           {audio, "spectrogram.png", "synth.report.json"});
 
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
   const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);
@@ -218,7 +241,13 @@ int runRunCommand(const RunOptions& o) {
   }
   run["spectrum"] = spectrumSummary(tracks, out / audioName(scene.file));
   report["run"] = run;
+  // The run's report.json is simulate's plus `run`: recorded as made from simulate's, so that
+  // simulate's artefact still counts as intact next time.
+  const std::optional<io::FileDigest> simulateReport =
+      records.recordedArtefact("simulate", "report.json");
   io::writeTextFile(out / "report.json", report.dump(2) + "\n");
+  if (simulateReport)
+    records.complete("report", hash, {{"report.json", *simulateReport}}, {"report.json"});
   if (!o.common.quiet)
     std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
                  (out / audioName(scene.file)).string().c_str(), run["seconds"].get<double>());

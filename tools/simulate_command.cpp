@@ -14,6 +14,7 @@
 #include "io/bubble_histories.h"
 #include "io/bubble_track_file.h"
 #include "io/frame_files.h"
+#include "io/frame_folder.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
 #include "io/scene_meshes.h"
@@ -59,9 +60,30 @@ FrameRange parseFrames(const std::string& text, int total) {
 }
 
 std::string frameName(int frame, const char* extension) {
-  char name[32];
-  std::snprintf(name, sizeof name, "%04d.%s", frame, extension);
-  return name;
+  return io::frameFileName(frame, extension);
+}
+
+/// Clears the frames another run left in `frames` (io/frame_folder.h), so that it holds only the
+/// frames this one writes beside its bubbles.json; says what it removed and warns of what it left.
+void clearOtherRunsFrames(const std::filesystem::path& frames, const FrameRange& range, bool ply,
+                          bool quiet) {
+  const io::FrameFolderCleanup cleanup =
+      io::clearStaleFrames(frames, [&](int frame, std::string_view extension) {
+        return frame >= range.first && frame <= range.last && (extension == "vdb" || ply);
+      });
+  if (!cleanup.removed.empty() && !quiet)
+    std::fprintf(stderr, "fluidsound: note: %s: removed %zu stale frame file(s) of another run\n",
+                 frames.string().c_str(), cleanup.removed.size());
+  if (!cleanup.foreign.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < cleanup.foreign.size() && i < 3; ++i)
+      names += (i > 0 ? ", " : "") + cleanup.foreign[i].filename().string();
+    std::fprintf(
+        stderr, "fluidsound: warning: %s: left %zu entr%s that %s not frames of this run: %s%s\n",
+        frames.string().c_str(), cleanup.foreign.size(), cleanup.foreign.size() == 1 ? "y" : "ies",
+        cleanup.foreign.size() == 1 ? "is" : "are", names.c_str(),
+        cleanup.foreign.size() > 3 ? ", ..." : "");
+  }
 }
 
 }  // namespace
@@ -85,6 +107,7 @@ int runSimulateCommand(const SimulateOptions& o) {
   std::filesystem::create_directories(frames, ec);
   if (ec) throw io::OutputError(frames.string() + ": cannot create the folder: " + ec.message());
   io::requireWritableFolder(frames / "0000.vdb");
+  clearOtherRunsFrames(frames, range, o.ply, o.common.quiet);
 
   sim::FluidSolver solver(scene);
   // The bubble model runs inside the loop on the in-memory state (DESIGN.md), with the scene's

@@ -48,12 +48,14 @@ int runValidateCommand(const ValidateOptions& o) {
       std::snprintf(errorText, sizeof errorText, "%.4f%%", 100.0 * error);
       std::snprintf(tolText, sizeof tolText, "<= %g%%", 100.0 * r.tolerance);
     }
-    std::printf("%-44s %-26s %14.7g %14.7g %12s %-13s %s (%s)\n", r.check.c_str(), r.reference.c_str(),
-                r.measured, r.expected, errorText, r.unit.c_str(), r.pass ? "pass" : "FAIL", tolText);
+    std::printf("%-44s %-26s %14.7g %14.7g %12s %-13s %s (%s)%s%s\n", r.check.c_str(), r.reference.c_str(),
+                r.measured, r.expected, errorText, r.unit.c_str(), r.pass ? "pass" : "FAIL", tolText,
+                r.note.empty() ? "" : " ", r.note.c_str());
     failures += r.pass ? 0 : 1;
     table.push_back({{"check", r.check}, {"reference", r.reference}, {"measured", r.measured},
                      {"expected", r.expected}, {"tolerance", r.tolerance}, {"absolute", r.absolute},
                      {"unit", r.unit}, {"pass", r.pass}});
+    if (!r.note.empty()) table.back()["note"] = r.note;
   }
   if (failures == 0) std::printf("validation: all %zu checks within tolerance\n", rows.size());
   else std::printf("validation: %d of %zu checks outside tolerance\n", failures, rows.size());

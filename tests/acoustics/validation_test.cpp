@@ -34,6 +34,36 @@ TEST(Validation, VanDenDoelDampingPassesEveryCheck) {
   expectAllPass(s);
 }
 
+// With the chirp on (the van den Doel rise, ξ = 0.1), `validate` exited 5: the 0.25 mm bubble's
+// chirped pitch reaches Nyquist before its cut-off, the synthesizer drops it and the FFT peak got
+// no samples. The steady-pitch checks now render with the chirp off (and say so); every row passes.
+TEST(Validation, ChirpModelPassesEveryCheck) {
+  SynthesisSettings s;
+  s.model.chirp = true;
+  expectAllPass(s);
+  int steady = 0;
+  for (const ValidationRow& r : validateBubbleAcoustics(s))
+    steady += r.check.find("(chirp off)") != std::string::npos ? 1 : 0;
+  EXPECT_EQ(steady, 6 * 7 + 6) << "every deep-bubble row (7 per radius) and the 6 depth-shift rows";
+}
+
+// A render no estimator can measure fails its rows and says why, instead of throwing: at ξ = 5 a
+// 1 mm bubble's pitch reaches f₀(1 + 5 ln 10^4.5) ≈ 53 f₀ = 174 kHz before its −90 dB cut-off, so
+// the synthesizer drops it (the Nyquist guard) and the cut-off, linearity and chirp rows have
+// nothing to measure.
+TEST(Validation, AnUnmeasurableRenderFailsItsRowsWithAReason) {
+  SynthesisSettings s;
+  s.model.chirp = true;
+  s.model.chirpRiseFactor = 5.0;
+  int failed = 0;
+  for (const ValidationRow& r : validateBubbleAcoustics(s)) {
+    if (r.pass) continue;
+    ++failed;
+    EXPECT_NE(r.note.rfind("not measured: ", 0), std::string::npos) << r.check << ": " << r.note;
+  }
+  EXPECT_EQ(failed, 4) << "the cut-off, the two linearity rows and the chirp row";
+}
+
 // The table comparisons are live: a liquid 2 % denser than the tables' water moves every
 // frequency by ≈ −1 %, beyond the 0.2 % tolerance, and the T1 rows must fail.
 TEST(Validation, DetectsAWrongLiquid) {

@@ -346,6 +346,24 @@ TEST(SceneFile, EmptyListenerListIsNamed) {
               "an empty array");
 }
 
+// One channel per listener and the synthesizer renders at most 16 (acoustics::kMaxListeners):
+// a 17th is refused where the scene is read, before any simulation (it failed in synth after it).
+TEST(SceneFile, MoreListenersThanChannelsAreRefused) {
+  json document = fullScene();
+  json listeners = json::array();
+  for (int i = 0; i < 17; ++i) {
+    std::string name = "listener ";  // appended: g++ 12 warns falsely (-Wrestrict) on "literal" + string
+    name.append(std::to_string(i));
+    listeners.push_back({{"name", name}, {"position", {0.0, 1.0, 0.0}}});
+  }
+  document["listeners"] = listeners;
+  expectError(parseError(document.dump()), "listeners",
+              "at most 16 listeners (one channel each), found 17 listeners");
+  listeners.erase(listeners.size() - 1);
+  document["listeners"] = listeners;
+  EXPECT_EQ(parseScene(document.dump(), "tank.json").listeners.size(), 16u) << "16 is the limit, not beyond it";
+}
+
 TEST(SceneFile, SampleRateOutOfRangeIsNamed) {
   json document = fullScene();
   document["audio"]["sample_rate"] = 4000;
