@@ -39,6 +39,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
   c->add_option("-o,--output", o.output, "output folder")->required();
   c->add_flag("--fresh", o.fresh, "run every stage again, even if its artefacts are up to date");
   addCellOption(*c, o.cell);
+  addAudioOutputOptions(*c, o.audio);
   addCommonOptions(*c, o.common);
   return c;
 }
@@ -82,11 +83,12 @@ Json readStages(const std::filesystem::path& path) {
   return stages.is_object() ? stages : Json::object();
 }
 
-/// The name of the audio file: the scene file's name without `.json` and `.scene`.
-std::string audioName(const std::filesystem::path& scene) {
+/// The name of the audio file: the scene file's name without `.json` and `.scene`, with the
+/// extension of the format asked for (`.wav` by default).
+std::string audioName(const std::filesystem::path& scene, const AudioOutputOptions& audio) {
   std::string stem = scene.stem().string();
   if (stem.size() > 6 && stem.ends_with(".scene")) stem.resize(stem.size() - 6);
-  return stem + ".wav";
+  return stem + (audioFormat(audio, stem + ".wav") == io::AudioFormat::Flac ? ".flac" : ".wav");
 }
 
 /// Bubble counts by radius, 10 log-spaced bins from 0.1 to 10 mm (radii outside go to the ends).
@@ -115,10 +117,11 @@ constexpr double kCentroidLowHz = 20.0, kCentroidHighHz = 20000.0;
 /// Per listener, the rendered audio's spectral centroid and the one predicted from the bubble
 /// tracks (acoustics/centroid_prediction.h, docs/synthesis.md "What the spectrum shows"); null
 /// where a channel has no energy in the band.
-Json spectrumSummary(const acoustics::BubbleTrackSet& tracks, const std::filesystem::path& audioPath) {
+Json spectrumSummary(const acoustics::BubbleTrackSet& tracks, const std::filesystem::path& audioPath,
+                     const std::optional<double>& sampleRate) {
   const io::AudioBuffer audio = io::readAudio(audioPath);
-  acoustics::SynthesisSettings settings;  // what the synth stage renders with: the file's rate and duration
-  settings.sampleRate = tracks.sampleRate;
+  acoustics::SynthesisSettings settings;  // what the synth stage renders with: its rate, the file's duration
+  settings.sampleRate = sampleRate.value_or(tracks.sampleRate);
   settings.duration = tracks.duration;
   const acoustics::FrequencyBand band{kCentroidLowHz, std::min(kCentroidHighHz, audio.sampleRate / 2.0)};
   const std::vector<acoustics::PredictedSpectrum> predicted = acoustics::predictedSpectra(tracks, settings, band);
@@ -157,15 +160,16 @@ int runRunCommand(const RunOptions& o) {
   bool upstreamRan = false;
   // Runs `stage` unless its artefacts are up to date (same inputs, no earlier stage ran again),
   // then records its completion, so that an interrupted run resumes at the first unfinished stage.
-  const auto runStage = [&](const char* name, const auto& body, std::initializer_list<std::string> artefacts) {
+  const auto runStage = [&](const char* name, const auto& body, std::initializer_list<std::string> artefacts,
+                            const std::string& stageHash) {
     bool present = true;
     for (const std::string& a : artefacts) present = present && std::filesystem::exists(out / a);
-    const bool reuse = !upstreamRan && present && stages.value(name, "") == hash;
+    const bool reuse = !upstreamRan && present && stages.value(name, "") == stageHash;
     const auto t0 = Clock::now();
     if (!reuse) {
       if (!o.common.quiet) std::fprintf(stderr, "run: %s\n", name);
       body();
-      stages[name] = hash;
+      stages[name] = stageHash;
       std::filesystem::create_directories(out);
       io::writeTextFile(stagesPath, stages.dump(2) + "\n");
       upstreamRan = true;
@@ -180,7 +184,7 @@ int runRunCommand(const RunOptions& o) {
   simulate.scene = o.scene;
   simulate.output = o.output;
   simulate.cell = o.cell;
-  runStage("simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"});
+  runStage("simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"}, hash);
   // simulate's report.json is the base of the run's report; read it before later stages change
   // anything (a reused simulation keeps its own).
   Json report = Json::parse(fileBytes(out / "report.json"), nullptr, false);
@@ -190,15 +194,19 @@ int runRunCommand(const RunOptions& o) {
   transfer.common = o.common;
   transfer.scene = o.scene;
   transfer.output = o.output;
-  runStage("transfer", [&] { runTransferCommand(transfer); }, {"transfer.report.json"});
+  runStage("transfer", [&] { runTransferCommand(transfer); }, {"transfer.report.json"}, hash);
 
   SynthOptions synth;
   synth.common = o.common;
   synth.input = (out / "bubbles.json").string();
-  synth.output = (out / audioName(scene.file)).string();
+  synth.audio = o.audio;
+  const std::string audioFile = audioName(scene.file, o.audio);
+  synth.output = (out / audioFile).string();
   synth.spectrogram = (out / "spectrogram.png").string();
   synth.report = (out / "synth.report.json").string();
-  runStage("synth", [&] { runSynthCommand(synth); }, {audioName(scene.file), "spectrogram.png", "synth.report.json"});
+  // The synth stage also depends on the audio options: a new --loudness renders again.
+  runStage("synth", [&] { runSynthCommand(synth); }, {audioFile, "spectrogram.png", "synth.report.json"},
+           hash + " " + audioOptionsFingerprint(o.audio));
 
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
   const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);
@@ -208,20 +216,21 @@ int runRunCommand(const RunOptions& o) {
               {"stages", stageReport},
               {"bubbles", tracks.bubbles.size()},
               {"radius_histogram", radiusHistogram(tracks)},
-              {"audio", audioName(scene.file)},
+              {"audio", audioFile},
               {"spectrogram", "spectrogram.png"},
               {"seconds", std::chrono::duration<double>(Clock::now() - start).count()}};
   if (synthReport.is_object() && synthReport.contains("results")) {
     const Json& r = synthReport["results"];
     if (r.contains("peak_pascals")) run["peak_pascals"] = r["peak_pascals"];
     if (r.contains("output_peak_dbfs")) run["peak_dbfs"] = r["output_peak_dbfs"];
+    if (r.contains("audio_output")) run["audio_output"] = r["audio_output"];  // scale, gain, loudness, names
   }
-  run["spectrum"] = spectrumSummary(tracks, out / audioName(scene.file));
+  run["spectrum"] = spectrumSummary(tracks, out / audioFile, o.audio.sampleRate);
   report["run"] = run;
   io::writeTextFile(out / "report.json", report.dump(2) + "\n");
   if (!o.common.quiet)
     std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
-                 (out / audioName(scene.file)).string().c_str(), run["seconds"].get<double>());
+                 (out / audioFile).string().c_str(), run["seconds"].get<double>());
   return kExitSuccess;
 }
 
