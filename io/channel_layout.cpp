@@ -1,6 +1,6 @@
 // io/channel_layout.cpp — speaker masks and channel names in written WAV/FLAC (see
 // channel_layout.h). Byte layouts: WAVE_FORMAT_EXTENSIBLE (Microsoft, "Multiple channel audio
-// data and WAVE files", 2017), FLAC metadata blocks (RFC 9639 §8) and Vorbis comments (Xiph,
+// data and WAVE files", 2017), FLAC metadata blocks (RFC 9639) and Vorbis comments (Xiph,
 // "Ogg Vorbis I specification" §5).
 #include "io/channel_layout.h"
 
