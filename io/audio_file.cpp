@@ -41,7 +41,8 @@ struct SampleLayout {
   int bits = 32;   ///< 32 = float; 24 or 16 = PCM
 };
 
-SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settings, std::size_t channels) {
+SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settings,
+                          std::size_t channels) {
   if (settings.bitsPerSample != 16 && settings.bitsPerSample != 24 &&
       settings.bitsPerSample != 32) {
     badSettings(
@@ -55,10 +56,11 @@ SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settin
     layout.bits = settings.bitsPerSample;
     // WAVE_FORMAT_EXTENSIBLE can say "no speaker positions" (channel_layout.h); plain WAVE
     // cannot, and players guess a surround layout from the channel count.
-    const int container = channels >= kFirstUnpositionedChannelCount ? SF_FORMAT_WAVEX : SF_FORMAT_WAV;
+    const int container =
+        channels >= kFirstUnpositionedChannelCount ? SF_FORMAT_WAVEX : SF_FORMAT_WAV;
     layout.format = container | (layout.bits == 32   ? SF_FORMAT_FLOAT
-                                     : layout.bits == 24 ? SF_FORMAT_PCM_24
-                                                         : SF_FORMAT_PCM_16);
+                                 : layout.bits == 24 ? SF_FORMAT_PCM_24
+                                                     : SF_FORMAT_PCM_16);
   }
   return layout;
 }
@@ -86,23 +88,28 @@ double checkedPeak(const fs::path& path, const AudioBuffer& audio) {
 }
 
 /// The gain of a peak or loudness normalisation (1 without either); sets the report's flags.
-double normalisationGain(const fs::path& path, const AudioBuffer& audio, const AudioWriteSettings& settings,
-                         AudioWriteReport& report) {
+double normalisationGain(const fs::path& path, const AudioBuffer& audio,
+                         const AudioWriteSettings& settings, AudioWriteReport& report) {
   if (settings.normalizePeakDbfs && settings.loudness)
     badSettings(path, "normalise either to a peak or to a loudness, not both");
   if (settings.normalizePeakDbfs) {
     if (!std::isfinite(*settings.normalizePeakDbfs))
       badSettings(path, "the normalisation peak must be a finite level in dBFS");
-    return report.inputPeak > 0 ? std::pow(10.0, *settings.normalizePeakDbfs / 20.0) / report.inputPeak : 1.0;
+    return report.inputPeak > 0
+               ? std::pow(10.0, *settings.normalizePeakDbfs / 20.0) / report.inputPeak
+               : 1.0;
   }
   if (!settings.loudness) return 1.0;
-  if (!std::isfinite(settings.loudness->integratedLufs) || !std::isfinite(settings.loudness->truePeakCeilingDbtp))
+  if (!std::isfinite(settings.loudness->integratedLufs) ||
+      !std::isfinite(settings.loudness->truePeakCeilingDbtp))
     badSettings(path, "the loudness target and true-peak ceiling must be finite levels");
   // Measured with the peak at full scale, so that BS.1770's one absolute gate (−70 LUFS) drops
   // only what is 70 dB below the loudest sound, whatever the render's level in pascals.
   const double probe = report.inputPeak > 0 ? 1.0 / report.inputPeak : 1.0;
-  const acoustics::LoudnessMeasurement m = acoustics::measureLoudness(audio.channels, audio.sampleRate, probe);
-  const std::optional<acoustics::LoudnessGain> gain = acoustics::loudnessNormalisationGain(m, *settings.loudness);
+  const acoustics::LoudnessMeasurement m =
+      acoustics::measureLoudness(audio.channels, audio.sampleRate, probe);
+  const std::optional<acoustics::LoudnessGain> gain =
+      acoustics::loudnessNormalisationGain(m, *settings.loudness);
   if (!gain) {
     report.loudnessUnmeasured = true;
     return 1.0;
@@ -112,7 +119,8 @@ double normalisationGain(const fs::path& path, const AudioBuffer& audio, const A
 }
 
 /// Names the channels in a WAV's iXML chunk (before any audio is written: libsndfile's rule).
-void addChannelNames(const fs::path& path, SNDFILE* file, const AudioWriteSettings& settings, int format) {
+void addChannelNames(const fs::path& path, SNDFILE* file, const AudioWriteSettings& settings,
+                     int format) {
   if (settings.channelNames.empty() || (format & SF_FORMAT_TYPEMASK) == SF_FORMAT_FLAC) return;
   std::string xml = ixmlTrackList(settings.channelNames);
   // libsndfile copies `datalen` bytes but writes the chunk rounded up to 4: pad it ourselves.

@@ -29,7 +29,8 @@ struct AudioWriteSettings {
   /// scale to this integrated loudness under a true-peak ceiling (not with normalizePeakDbfs)
   std::optional<acoustics::LoudnessTarget> loudness;
   std::uint64_t ditherSeed = 1;                ///< seed of the TPDF dither noise (deterministic)
-  /// channel c's name (its listener's), written to a WAV's iXML chunk; empty: none, else one per channel
+  /// channel c's name (its listener's), written to a WAV's iXML chunk; empty: none, else one per
+  /// channel
   std::vector<std::string> channelNames;
 };
 
@@ -41,9 +42,10 @@ struct AudioWriteReport {
   std::int64_t clippedSamples = 0;  ///< samples beyond full scale in a PCM file (clipped by the format)
   /// loudness of the samples written (after gain, dither and clipping), full scale 1.0
   acoustics::LoudnessMeasurement written;
-  bool truePeakLimited = false;   ///< the loudness target's gain was lowered to meet the true-peak ceiling
-  bool loudnessUnmeasured = false;  ///< a loudness target was asked for, but the input has no integrated
-                                    ///< loudness (silence, < 0.4 s): gain left at 1
+  bool truePeakLimited =
+      false;  ///< the loudness target's gain was lowered to meet the true-peak ceiling
+  bool loudnessUnmeasured = false;  ///< a loudness target was asked for, but the input has no
+                                    ///< integrated loudness (silence, < 0.4 s): gain left at 1
 };
 
 /// @brief Infers the format from a file name: `.flac` → Flac, otherwise Wav.

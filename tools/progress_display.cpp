@@ -25,14 +25,20 @@ std::string formatDuration(double seconds) {
 }
 
 ProgressDisplay::ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet)
-    : ProgressDisplay(std::move(stage), totalUnits, std::move(unit), quiet, stderr, isatty(STDERR_FILENO) != 0,
-                      kShowAfterSeconds) {}
+    : ProgressDisplay(std::move(stage), totalUnits, std::move(unit), quiet, stderr,
+                      isatty(STDERR_FILENO) != 0, kShowAfterSeconds) {}
 
 ProgressDisplay::ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet,
                                  std::FILE* stream, bool terminal, double showAfterSeconds)
-    : stage_(std::move(stage)), unit_(std::move(unit)), totalUnits_(totalUnits), showAfterSeconds_(showAfterSeconds),
-      quiet_(quiet), stream_(stream),
-      terminal_(terminal), start_(Clock::now()), lastLine_(start_) {}
+    : stage_(std::move(stage)),
+      unit_(std::move(unit)),
+      totalUnits_(totalUnits),
+      showAfterSeconds_(showAfterSeconds),
+      quiet_(quiet),
+      stream_(stream),
+      terminal_(terminal),
+      start_(Clock::now()),
+      lastLine_(start_) {}
 
 ProgressDisplay::~ProgressDisplay() { finish(); }
 
@@ -48,8 +54,9 @@ void ProgressDisplay::update(double fraction) {
   const double rate = fraction * totalUnits_ / elapsed;
   const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
   char text[256];
-  std::snprintf(text, sizeof text, "%s %5.1f%%  %.3g %s/s  elapsed %s  ETA %s", stage_.c_str(), 100.0 * fraction,
-                rate, unit_.c_str(), formatDuration(elapsed).c_str(), formatDuration(eta).c_str());
+  std::snprintf(text, sizeof text, "%s %5.1f%%  %.3g %s/s  elapsed %s  ETA %s", stage_.c_str(),
+                100.0 * fraction, rate, unit_.c_str(), formatDuration(elapsed).c_str(),
+                formatDuration(eta).c_str());
   drawn_ = text;
   if (terminal_) {
     std::fprintf(stream_, "%s%s", kClearLine, drawn_.c_str());

@@ -21,8 +21,8 @@ class ProgressDisplay {
   ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet);
   /// The same on `stream`, redrawn in place if `terminal`, shown after `showAfterSeconds` (for
   /// tests and other streams).
-  ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet, std::FILE* stream,
-                  bool terminal, double showAfterSeconds);
+  ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet,
+                  std::FILE* stream, bool terminal, double showAfterSeconds);
   ~ProgressDisplay();
   ProgressDisplay(const ProgressDisplay&) = delete;
   ProgressDisplay& operator=(const ProgressDisplay&) = delete;
@@ -45,8 +45,8 @@ class ProgressDisplay {
   bool quiet_;
   std::FILE* stream_;
   bool terminal_;
-  bool shown_ = false;   ///< the progress line is on the terminal's last line now
-  std::string drawn_;    ///< its text, to draw again after a log line
+  bool shown_ = false;  ///< the progress line is on the terminal's last line now
+  std::string drawn_;   ///< its text, to draw again after a log line
   Clock::time_point start_, lastLine_;
 };
 

@@ -117,10 +117,12 @@ constexpr double kCentroidLowHz = 20.0, kCentroidHighHz = 20000.0;
 /// Per listener, the rendered audio's spectral centroid and the one predicted from the bubble
 /// tracks (acoustics/centroid_prediction.h, docs/synthesis.md "What the spectrum shows"); null
 /// where a channel has no energy in the band.
-Json spectrumSummary(const acoustics::BubbleTrackSet& tracks, const std::filesystem::path& audioPath,
+Json spectrumSummary(const acoustics::BubbleTrackSet& tracks,
+                     const std::filesystem::path& audioPath,
                      const std::optional<double>& sampleRate) {
   const io::AudioBuffer audio = io::readAudio(audioPath);
-  acoustics::SynthesisSettings settings;  // what the synth stage renders with: its rate, the file's duration
+  // What the synth stage renders with: its rate, the file's duration.
+  acoustics::SynthesisSettings settings;
   settings.sampleRate = sampleRate.value_or(tracks.sampleRate);
   settings.duration = tracks.duration;
   const acoustics::FrequencyBand band{kCentroidLowHz, std::min(kCentroidHighHz, audio.sampleRate / 2.0)};
@@ -160,7 +162,8 @@ int runRunCommand(const RunOptions& o) {
   bool upstreamRan = false;
   // Runs `stage` unless its artefacts are up to date (same inputs, no earlier stage ran again),
   // then records its completion, so that an interrupted run resumes at the first unfinished stage.
-  const auto runStage = [&](const char* name, const auto& body, std::initializer_list<std::string> artefacts,
+  const auto runStage = [&](const char* name, const auto& body,
+                            std::initializer_list<std::string> artefacts,
                             const std::string& stageHash) {
     bool present = true;
     for (const std::string& a : artefacts) present = present && std::filesystem::exists(out / a);
@@ -184,7 +187,8 @@ int runRunCommand(const RunOptions& o) {
   simulate.scene = o.scene;
   simulate.output = o.output;
   simulate.cell = o.cell;
-  runStage("simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"}, hash);
+  runStage(
+      "simulate", [&] { runSimulateCommand(simulate); }, {"report.json", "bubbles.json"}, hash);
   // simulate's report.json is the base of the run's report; read it before later stages change
   // anything (a reused simulation keeps its own).
   Json report = Json::parse(fileBytes(out / "report.json"), nullptr, false);
@@ -194,7 +198,8 @@ int runRunCommand(const RunOptions& o) {
   transfer.common = o.common;
   transfer.scene = o.scene;
   transfer.output = o.output;
-  runStage("transfer", [&] { runTransferCommand(transfer); }, {"transfer.report.json"}, hash);
+  runStage(
+      "transfer", [&] { runTransferCommand(transfer); }, {"transfer.report.json"}, hash);
 
   SynthOptions synth;
   synth.common = o.common;
@@ -205,8 +210,9 @@ int runRunCommand(const RunOptions& o) {
   synth.spectrogram = (out / "spectrogram.png").string();
   synth.report = (out / "synth.report.json").string();
   // The synth stage also depends on the audio options: a new --loudness renders again.
-  runStage("synth", [&] { runSynthCommand(synth); }, {audioFile, "spectrogram.png", "synth.report.json"},
-           hash + " " + audioOptionsFingerprint(o.audio));
+  runStage(
+      "synth", [&] { runSynthCommand(synth); }, {audioFile, "spectrogram.png", "synth.report.json"},
+      hash + " " + audioOptionsFingerprint(o.audio));
 
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
   const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);
@@ -223,14 +229,16 @@ int runRunCommand(const RunOptions& o) {
     const Json& r = synthReport["results"];
     if (r.contains("peak_pascals")) run["peak_pascals"] = r["peak_pascals"];
     if (r.contains("output_peak_dbfs")) run["peak_dbfs"] = r["output_peak_dbfs"];
-    if (r.contains("audio_output")) run["audio_output"] = r["audio_output"];  // scale, gain, loudness, names
+    if (r.contains("audio_output"))
+      run["audio_output"] = r["audio_output"];  // scale, gain, loudness, names
   }
   run["spectrum"] = spectrumSummary(tracks, out / audioFile, o.audio.sampleRate);
   report["run"] = run;
   io::writeTextFile(out / "report.json", report.dump(2) + "\n");
   if (!o.common.quiet)
-    std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
-                 (out / audioFile).string().c_str(), run["seconds"].get<double>());
+    std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n",
+                 tracks.bubbles.size(), (out / audioFile).string().c_str(),
+                 run["seconds"].get<double>());
   return kExitSuccess;
 }
 

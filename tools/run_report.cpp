@@ -49,7 +49,9 @@ void RunReport::stageSeconds(const std::string& stage, double seconds) {
 }
 
 void RunReport::result(const std::string& key, double value) { data_->json["results"][key] = value; }
-void RunReport::result(const std::string& key, const std::string& value) { data_->json["results"][key] = value; }
+void RunReport::result(const std::string& key, const std::string& value) {
+  data_->json["results"][key] = value;
+}
 
 void RunReport::resultJson(const std::string& key, const std::string& jsonText) {
   data_->json["results"][key] = nlohmann::ordered_json::parse(jsonText);
@@ -71,7 +73,8 @@ std::vector<std::pair<std::string, std::string>> versions() {
 std::string versionText() {
   const auto list = versions();
   std::string text = list.front().first + " " + list.front().second + "\n";
-  for (std::size_t i = 1; i < list.size(); ++i) text += "  " + list[i].first + " " + list[i].second + "\n";
+  for (std::size_t i = 1; i < list.size(); ++i)
+    text += "  " + list[i].first + " " + list[i].second + "\n";
   return text;
 }
 

@@ -15,7 +15,7 @@ struct SynthOptions {
   CommonOptions common;
   std::string input;                 ///< bubble-track file
   std::string output;                ///< .wav or .flac
-  AudioOutputOptions audio;          ///< --rate, --format, --bits, --normalize, --loudness, --true-peak
+  AudioOutputOptions audio;  ///< --rate, --format, --bits, --normalize, --loudness, --true-peak
   std::optional<double> duration;    ///< s; default: the file's, else until all have decayed
   std::string report;                ///< report path; default OUT with extension .report.json
   std::string spectrogram;           ///< also draw this PNG, if given

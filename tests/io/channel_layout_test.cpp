@@ -148,8 +148,9 @@ TEST(ChannelLayout, WavNamesItsChannelsInAnIxmlTrackList) {
   EXPECT_NE(third, std::string::npos) << *ixml;
   EXPECT_LT(left, right);
   EXPECT_LT(right, third);
-  EXPECT_THROW(writeAudio(folder.path() / "wrong.wav", ramps(3), {.channelNames = {"one"}}),
-               std::invalid_argument);
+  AudioWriteSettings oneName;
+  oneName.channelNames = {"one"};
+  EXPECT_THROW(writeAudio(folder.path() / "wrong.wav", ramps(3), oneName), std::invalid_argument);
 }
 
 // Claim: a FLAC of 3 to 8 channels carries the Vorbis comment WAVEFORMATEXTENSIBLE_CHANNEL_MASK=0x0
