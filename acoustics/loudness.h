@@ -27,7 +27,7 @@ struct LoudnessMeasurement {
 ///        none is a surround (weight 1.41) or an LFE channel (left out).
 class LoudnessMeter {
  public:
-  /// @param channels    1 … 64
+  /// @param channels    ≥ 1 (libebur128 takes any number)
   /// @param sampleRate  [Hz], a whole number ≥ 1
   /// @throws std::invalid_argument on bad parameters, std::bad_alloc if libebur128 fails
   LoudnessMeter(std::size_t channels, double sampleRate);
