@@ -2,6 +2,7 @@
 #include "acoustics/loudness.h"
 
 #include <ebur128.h>
+#include <oneapi/tbb/parallel_for.h>
 
 #include <algorithm>
 #include <climits>
@@ -22,11 +23,30 @@ double decibels(double amplitude) {
 
 }  // namespace
 
-struct LoudnessMeter::State {
-  ebur128_state* meter = nullptr;
-  ~State() {
-    if (meter != nullptr) ebur128_destroy(&meter);
+/// One libebur128 meter, destroyed with its owner.
+struct Ebur128Meter {
+  ebur128_state* state = nullptr;
+  Ebur128Meter(std::size_t channels, double sampleRate, int mode)
+      : state(ebur128_init(static_cast<unsigned>(channels), static_cast<unsigned long>(sampleRate),
+                           mode)) {
+    if (state == nullptr) throw std::bad_alloc();
   }
+  ~Ebur128Meter() { ebur128_destroy(&state); }
+  Ebur128Meter(const Ebur128Meter&) = delete;
+  Ebur128Meter& operator=(const Ebur128Meter&) = delete;
+  void add(const float* frames, std::size_t count) {
+    if (ebur128_add_frames_float(state, frames, count) != EBUR128_SUCCESS)
+      throw std::bad_alloc();  // its only failure: no memory for the block history
+  }
+};
+
+/// The integrated loudness needs all channels in one meter; the true peak (4× oversampling, five
+/// times the cost of the loudness) is per channel, so each channel has its own mono meter and
+/// they run in parallel. Every meter sees the same samples in the same order whatever the
+/// thread count, so the measurement is the same bits.
+struct LoudnessMeter::State {
+  std::unique_ptr<Ebur128Meter> loudness;
+  std::vector<std::unique_ptr<Ebur128Meter>> truePeaks;  ///< one per channel
 };
 
 LoudnessMeter::LoudnessMeter(std::size_t channels, double sampleRate)
@@ -36,13 +56,13 @@ LoudnessMeter::LoudnessMeter(std::size_t channels, double sampleRate)
   if (!(sampleRate >= 1 && sampleRate <= INT_MAX) || sampleRate != std::floor(sampleRate))
     throw std::invalid_argument("loudness meter: expected a whole sample rate in Hz, found " +
                                 std::to_string(sampleRate));
-  state_->meter =
-      ebur128_init(static_cast<unsigned>(channels), static_cast<unsigned long>(sampleRate),
-                   EBUR128_MODE_I | EBUR128_MODE_TRUE_PEAK);
-  if (state_->meter == nullptr) throw std::bad_alloc();
+  state_->loudness = std::make_unique<Ebur128Meter>(channels, sampleRate, EBUR128_MODE_I);
   // libebur128's default map leaves channel 3 out (LFE) and weights 4 and 5 as surrounds.
   for (std::size_t c = 0; c < channels; ++c)
-    ebur128_set_channel(state_->meter, static_cast<unsigned>(c), EBUR128_CENTER);
+    ebur128_set_channel(state_->loudness->state, static_cast<unsigned>(c), EBUR128_CENTER);
+  for (std::size_t c = 0; c < channels; ++c)
+    state_->truePeaks.push_back(
+        std::make_unique<Ebur128Meter>(1, sampleRate, EBUR128_MODE_TRUE_PEAK));
 }
 
 LoudnessMeter::~LoudnessMeter() = default;
@@ -50,21 +70,30 @@ LoudnessMeter::~LoudnessMeter() = default;
 void LoudnessMeter::addInterleaved(std::span<const float> interleaved) {
   if (interleaved.size() % channels_ != 0)
     throw std::invalid_argument("loudness meter: samples are not a whole number of frames");
-  if (ebur128_add_frames_float(state_->meter, interleaved.data(), interleaved.size() / channels_) !=
-      EBUR128_SUCCESS)
-    throw std::bad_alloc();  // its only failure: no memory for the block history
+  const std::size_t frames = interleaved.size() / channels_;
+  // Task c < channels: channel c's true peak; task `channels`: the loudness of all of them.
+  tbb::parallel_for(std::size_t{0}, channels_ + 1, [&](std::size_t task) {
+    if (task == channels_) {
+      state_->loudness->add(interleaved.data(), frames);
+      return;
+    }
+    std::vector<float> channel(frames);
+    for (std::size_t i = 0; i < frames; ++i) channel[i] = interleaved[i * channels_ + task];
+    state_->truePeaks[task]->add(channel.data(), frames);
+  });
 }
 
 LoudnessMeasurement LoudnessMeter::measurement() const {
   LoudnessMeasurement m;
   double lufs = 0.0;
   // ebur128 reports −HUGE_VAL when no block passes the gates.
-  if (ebur128_loudness_global(state_->meter, &lufs) == EBUR128_SUCCESS && std::isfinite(lufs))
+  if (ebur128_loudness_global(state_->loudness->state, &lufs) == EBUR128_SUCCESS &&
+      std::isfinite(lufs))
     m.integratedLufs = lufs;
   double peak = 0.0;
   for (std::size_t c = 0; c < channels_; ++c) {
     double channelPeak = 0.0;
-    ebur128_true_peak(state_->meter, static_cast<unsigned>(c), &channelPeak);
+    ebur128_true_peak(state_->truePeaks[c]->state, 0, &channelPeak);
     peak = std::max(peak, channelPeak);
   }
   m.truePeakDbtp = decibels(peak);

@@ -4,6 +4,7 @@
 #include "acoustics/loudness.h"
 
 #include <gtest/gtest.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
 #include <numbers>
@@ -98,6 +99,20 @@ TEST(Loudness, WeighsEveryListenerAlike) {
     ASSERT_TRUE(m.integratedLufs.has_value()) << "channel " << lit;
     EXPECT_NEAR(*m.integratedLufs, -23.0 - 3.0103, 0.1) << "channel " << lit;
   }
+}
+
+// Claim: the measurement is the same bits for any thread count (the true-peak meters of the
+// channels run in parallel, each on the same samples in the same order). Reference: one thread.
+TEST(Loudness, IsTheSameForAnyThreadCount) {
+  std::vector<std::vector<float>> channels;
+  for (int c = 0; c < 5; ++c)
+    channels.push_back(sineSegments(300.0 + 200.0 * c, {{-20.0 - c, 2.0}}, 0.3 * c));
+  LoudnessMeasurement serial;
+  oneapi::tbb::task_arena(1).execute([&] { serial = measureLoudness(channels, kRate); });
+  const LoudnessMeasurement parallel = measureLoudness(channels, kRate);
+  ASSERT_TRUE(serial.integratedLufs && parallel.integratedLufs);
+  EXPECT_EQ(*serial.integratedLufs, *parallel.integratedLufs);
+  EXPECT_EQ(serial.truePeakDbtp, parallel.truePeakDbtp);
 }
 
 // Claim: silence and records shorter than one 400 ms gating block have no integrated loudness
