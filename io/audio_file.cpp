@@ -1,5 +1,6 @@
 // io/audio_file.cpp — WAV/FLAC through libsndfile (docs/audio.md): float or TPDF-dithered PCM,
-// optional peak normalisation, clipping counted, atomic output; reading back as floats.
+// optional peak or loudness normalisation, clipping counted, loudness of what was written,
+// channels named and unpositioned, atomic output; reading back as floats.
 #include "io/audio_file.h"
 
 #include <sndfile.h>
@@ -9,6 +10,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -16,7 +18,9 @@
 #include <system_error>
 #include <vector>
 
+#include "acoustics/loudness.h"
 #include "io/atomic_file.h"
+#include "io/channel_layout.h"
 #include "io/input_error.h"
 
 namespace fluidsound::io {
@@ -37,7 +41,8 @@ struct SampleLayout {
   int bits = 32;   ///< 32 = float; 24 or 16 = PCM
 };
 
-SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settings) {
+SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settings,
+                          std::size_t channels) {
   if (settings.bitsPerSample != 16 && settings.bitsPerSample != 24 &&
       settings.bitsPerSample != 32) {
     badSettings(
@@ -49,9 +54,13 @@ SampleLayout sampleLayout(const fs::path& path, const AudioWriteSettings& settin
     layout.format = SF_FORMAT_FLAC | (layout.bits == 16 ? SF_FORMAT_PCM_16 : SF_FORMAT_PCM_24);
   } else {
     layout.bits = settings.bitsPerSample;
-    layout.format = SF_FORMAT_WAV | (layout.bits == 32   ? SF_FORMAT_FLOAT
-                                     : layout.bits == 24 ? SF_FORMAT_PCM_24
-                                                         : SF_FORMAT_PCM_16);
+    // WAVE_FORMAT_EXTENSIBLE can say "no speaker positions" (channel_layout.h); plain WAVE
+    // cannot, and players guess a surround layout from the channel count.
+    const int container =
+        channels >= kFirstUnpositionedChannelCount ? SF_FORMAT_WAVEX : SF_FORMAT_WAV;
+    layout.format = container | (layout.bits == 32   ? SF_FORMAT_FLOAT
+                                 : layout.bits == 24 ? SF_FORMAT_PCM_24
+                                                     : SF_FORMAT_PCM_16);
   }
   return layout;
 }
@@ -76,6 +85,53 @@ double checkedPeak(const fs::path& path, const AudioBuffer& audio) {
     }
   }
   return peak;
+}
+
+/// The gain of a peak or loudness normalisation (1 without either); sets the report's flags.
+double normalisationGain(const fs::path& path, const AudioBuffer& audio,
+                         const AudioWriteSettings& settings, AudioWriteReport& report) {
+  if (settings.normalizePeakDbfs && settings.loudness)
+    badSettings(path, "normalise either to a peak or to a loudness, not both");
+  if (settings.normalizePeakDbfs) {
+    if (!std::isfinite(*settings.normalizePeakDbfs))
+      badSettings(path, "the normalisation peak must be a finite level in dBFS");
+    return report.inputPeak > 0
+               ? std::pow(10.0, *settings.normalizePeakDbfs / 20.0) / report.inputPeak
+               : 1.0;
+  }
+  if (!settings.loudness) return 1.0;
+  if (!std::isfinite(settings.loudness->integratedLufs) ||
+      !std::isfinite(settings.loudness->truePeakCeilingDbtp))
+    badSettings(path, "the loudness target and true-peak ceiling must be finite levels");
+  // Measured with the peak at full scale, so that BS.1770's one absolute gate (−70 LUFS) drops
+  // only what is 70 dB below the loudest sound, whatever the render's level in pascals.
+  const double probe = report.inputPeak > 0 ? 1.0 / report.inputPeak : 1.0;
+  const acoustics::LoudnessMeasurement m =
+      acoustics::measureLoudness(audio.channels, audio.sampleRate, probe);
+  const std::optional<acoustics::LoudnessGain> gain =
+      acoustics::loudnessNormalisationGain(m, *settings.loudness);
+  if (!gain) {
+    report.loudnessUnmeasured = true;
+    return 1.0;
+  }
+  report.truePeakLimited = gain->limitedByTruePeak;
+  return probe * std::pow(10.0, gain->gainDecibels / 20.0);
+}
+
+/// Names the channels in a WAV's iXML chunk (before any audio is written: libsndfile's rule).
+void addChannelNames(const fs::path& path, SNDFILE* file, const AudioWriteSettings& settings,
+                     int format) {
+  if (settings.channelNames.empty() || (format & SF_FORMAT_TYPEMASK) == SF_FORMAT_FLAC) return;
+  std::string xml = ixmlTrackList(settings.channelNames);
+  // libsndfile copies `datalen` bytes but writes the chunk rounded up to 4: pad it ourselves.
+  while (xml.size() % 4 != 0) xml += '\n';
+  SF_CHUNK_INFO chunk{};
+  std::memcpy(chunk.id, "iXML", 4);
+  chunk.id_size = 4;
+  chunk.datalen = static_cast<unsigned>(xml.size());
+  chunk.data = xml.data();
+  if (sf_set_chunk(file, &chunk) != SF_ERR_NO_ERROR)
+    throw OutputError(path.string() + ": cannot write: the iXML chunk: " + sf_strerror(file));
 }
 
 double decibelsFromAmplitude(double amplitude) {
@@ -109,6 +165,21 @@ class SoundFile {
   SNDFILE* file_;
 };
 
+/// Commits a closed file, first marking 3 or more channels as having no speaker positions
+/// (channel_layout.h): in place for WAV, through a second temporary file for FLAC.
+void commitWithoutSpeakerPositions(AtomicFile& output, AudioFormat format, std::size_t channels) {
+  if (channels < kFirstUnpositionedChannelCount) {
+    output.commit();
+  } else if (format == AudioFormat::Wav) {
+    clearWaveSpeakerMask(output.temporaryPath());
+    output.commit();
+  } else {
+    AtomicFile labelled(output.targetPath());
+    copyFlacWithoutSpeakerMask(output.temporaryPath(), labelled.temporaryPath());
+    labelled.commit();  // `output`'s temporary goes with its destructor
+  }
+}
+
 }  // namespace
 
 AudioFormat audioFormatFromPath(const fs::path& path) {
@@ -121,20 +192,19 @@ AudioFormat audioFormatFromPath(const fs::path& path) {
 AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
                             const AudioWriteSettings& settings) {
   // Validate everything before touching the disk.
-  const SampleLayout layout = sampleLayout(path, settings);
+  const SampleLayout layout = sampleLayout(path, settings, audio.channels.size());
   const double rate = audio.sampleRate;
   if (!(rate >= 1 && rate <= INT_MAX) || rate != std::floor(rate)) {
     badSettings(
         path, "the sample rate must be a positive whole number of Hz, not " + std::to_string(rate));
   }
-  if (settings.normalizePeakDbfs && !std::isfinite(*settings.normalizePeakDbfs)) {
-    badSettings(path, "the normalisation peak must be a finite level in dBFS");
+  if (!settings.channelNames.empty() && settings.channelNames.size() != audio.channels.size()) {
+    badSettings(path, std::to_string(settings.channelNames.size()) + " channel names for " +
+                          std::to_string(audio.channels.size()) + " channels");
   }
   AudioWriteReport report;
   report.inputPeak = checkedPeak(path, audio);
-  if (settings.normalizePeakDbfs && report.inputPeak > 0) {
-    report.gain = std::pow(10.0, *settings.normalizePeakDbfs / 20.0) / report.inputPeak;
-  }
+  report.gain = normalisationGain(path, audio, settings, report);
 
   SF_INFO info{};
   info.samplerate = static_cast<int>(rate);
@@ -154,6 +224,8 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
   // No PEAK chunk: libsndfile stamps it with the time of writing, so two renders of the same
   // input would differ in those bytes (the peak is in report.json).
   sf_command(file.get(), SFC_SET_ADD_PEAK_CHUNK, nullptr, SF_FALSE);
+  addChannelNames(path, file.get(), settings, layout.format);
+  acoustics::LoudnessMeter meter(audio.channels.size(), rate);  // of the samples as written
   const auto writeFailed = [&] {
     return OutputError(path.string() + ": cannot write: " + sf_strerror(file.get()));
   };
@@ -173,6 +245,7 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
           block[i * channels + c] = value;
         }
       }
+      meter.addInterleaved(block);
       const auto want = static_cast<sf_count_t>(count);
       if (sf_writef_float(file.get(), block.data(), want) != want) throw writeFailed();
     }
@@ -186,9 +259,11 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
     std::mt19937_64 dither(settings.ditherSeed);
     std::int64_t largestCode = 0;
     std::vector<int> block;
+    std::vector<float> levels;  // the codes at full scale 1.0, for the loudness meter
     for (std::size_t start = 0; start < frames; start += kBlockFrames) {
       const std::size_t count = std::min(kBlockFrames, frames - start);
       block.resize(count * channels);
+      levels.resize(count * channels);
       for (std::size_t i = 0; i < count; ++i) {
         for (std::size_t c = 0; c < channels; ++c) {
           // TPDF dither: the sum of two independent uniform ±0.5 LSB values (Lipshitz,
@@ -202,8 +277,10 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
           }
           largestCode = std::max(largestCode, code < 0 ? -code : code);
           block[i * channels + c] = static_cast<int>(code * toInt32);
+          levels[i * channels + c] = static_cast<float>(static_cast<double>(code) / fullScale);
         }
       }
+      meter.addInterleaved(levels);
       const auto want = static_cast<sf_count_t>(count);
       if (sf_writef_int(file.get(), block.data(), want) != want) throw writeFailed();
     }
@@ -212,8 +289,9 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
   if (const int code = file.close(); code != 0) {
     throw OutputError(path.string() + ": cannot write: " + sf_error_number(code));
   }
-  output.commit();
+  commitWithoutSpeakerPositions(output, settings.format, channels);
   report.outputPeakDbfs = decibelsFromAmplitude(outputPeak);
+  report.written = meter.measurement();
   return report;
 }
 

@@ -1,11 +1,15 @@
 // io/audio_file.h — WAV and FLAC through libsndfile: 32-bit float by default, 16/24-bit PCM with
-// TPDF dither on request, optional normalisation to a peak level, atomic output; and reading back.
+// TPDF dither on request, optional normalisation to a peak level or to a loudness target under a
+// true-peak ceiling, channels named and without speaker positions, atomic output; reading back.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include "acoustics/loudness.h"
 
 namespace fluidsound::io {
 
@@ -22,7 +26,12 @@ struct AudioWriteSettings {
   AudioFormat format = AudioFormat::Wav;
   int bitsPerSample = 32;                      ///< 32 (float; WAV only), 24 or 16 (PCM, TPDF-dithered)
   std::optional<double> normalizePeakDbfs;     ///< scale so the peak is at this level [dBFS], e.g. −1
+  /// scale to this integrated loudness under a true-peak ceiling (not with normalizePeakDbfs)
+  std::optional<acoustics::LoudnessTarget> loudness;
   std::uint64_t ditherSeed = 1;                ///< seed of the TPDF dither noise (deterministic)
+  /// channel c's name (its listener's), written to a WAV's iXML chunk; empty: none, else one per
+  /// channel
+  std::vector<std::string> channelNames;
 };
 
 /// What writing did to the signal.
@@ -31,6 +40,12 @@ struct AudioWriteReport {
   double gain = 1.0;             ///< factor applied before writing (normalisation), [-]
   double outputPeakDbfs = 0.0;   ///< peak written, dB relative to full scale 1.0
   std::int64_t clippedSamples = 0;  ///< samples beyond full scale in a PCM file (clipped by the format)
+  /// loudness of the samples written (after gain, dither and clipping), full scale 1.0
+  acoustics::LoudnessMeasurement written;
+  bool truePeakLimited =
+      false;  ///< the loudness target's gain was lowered to meet the true-peak ceiling
+  bool loudnessUnmeasured = false;  ///< a loudness target was asked for, but the input has no
+                                    ///< integrated loudness (silence, < 0.4 s): gain left at 1
 };
 
 /// @brief Infers the format from a file name: `.flac` → Flac, otherwise Wav.
@@ -38,6 +53,7 @@ AudioFormat audioFormatFromPath(const std::filesystem::path& path);
 
 /// @brief Writes audio atomically. FLAC has no float samples: it is written as 24-bit (or 16-bit)
 ///        PCM. PCM output beyond full scale is clipped and counted in the report (never silently).
+///        Three or more channels are written without speaker positions (io/channel_layout.h).
 /// @throws OutputError if the file cannot be written; std::invalid_argument on bad settings
 AudioWriteReport writeAudio(const std::filesystem::path& path, const AudioBuffer& audio,
                             const AudioWriteSettings& settings);

@@ -1,12 +1,18 @@
-// io/library_versions.h — versions of the file-format libraries io/ was built with, for
-// `fluidsound --version` and report.json.
+// io/library_versions.h — versions of the libraries fluidsound links, for `fluidsound --version`
+// and the `versions` object of report.json.
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fluidsound::io {
 
-/// One line per library ("  libsndfile 1.2.0"), each ending in a newline.
-std::string libraryVersions();
+/// @brief (name, version) of every library linked except CLI11 (tools/ adds it: only the
+///        executable links it), in a fixed order: "openvdb", "embree", "tbb", "eigen",
+///        "libsndfile", "libebur128", "cairo", "nlohmann_json", "tinyobjloader". Shared libraries
+///        report the version that runs (their version functions: TBB, libsndfile, libebur128,
+///        cairo), header-only and statically versioned ones the version built with (macros).
+std::vector<std::pair<std::string, std::string>> libraryVersions();
 
 }  // namespace fluidsound::io

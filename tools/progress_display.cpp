@@ -11,6 +11,8 @@ namespace fluidsound::tools {
 namespace {
 constexpr double kShowAfterSeconds = 1.0;      // quick stages print nothing
 constexpr double kLogIntervalSeconds = 5.0;    // plain lines when stderr is not a terminal
+/// Carriage return, then erase to the end of the line (ECMA-48 EL, "CSI K").
+constexpr const char* kClearLine = "\r\x1b[K";
 }  // namespace
 
 std::string formatDuration(double seconds) {
@@ -23,8 +25,20 @@ std::string formatDuration(double seconds) {
 }
 
 ProgressDisplay::ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet)
-    : stage_(std::move(stage)), unit_(std::move(unit)), totalUnits_(totalUnits), quiet_(quiet),
-      terminal_(isatty(STDERR_FILENO) != 0), start_(Clock::now()), lastLine_(start_) {}
+    : ProgressDisplay(std::move(stage), totalUnits, std::move(unit), quiet, stderr,
+                      isatty(STDERR_FILENO) != 0, kShowAfterSeconds) {}
+
+ProgressDisplay::ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet,
+                                 std::FILE* stream, bool terminal, double showAfterSeconds)
+    : stage_(std::move(stage)),
+      unit_(std::move(unit)),
+      totalUnits_(totalUnits),
+      showAfterSeconds_(showAfterSeconds),
+      quiet_(quiet),
+      stream_(stream),
+      terminal_(terminal),
+      start_(Clock::now()),
+      lastLine_(start_) {}
 
 ProgressDisplay::~ProgressDisplay() { finish(); }
 
@@ -32,22 +46,39 @@ void ProgressDisplay::update(double fraction) {
   if (quiet_) return;
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  if (elapsed < kShowAfterSeconds) return;
+  if (elapsed < showAfterSeconds_) return;
   if (!terminal_ && std::chrono::duration<double>(now - lastLine_).count() < kLogIntervalSeconds &&
       fraction < 1.0)
     return;
   lastLine_ = now;
   const double rate = fraction * totalUnits_ / elapsed;
   const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-  std::fprintf(stderr, "%s%s %5.1f%%  %.3g %s/s  elapsed %s  ETA %s%s", terminal_ ? "\r" : "",
-               stage_.c_str(), 100.0 * fraction, rate, unit_.c_str(), formatDuration(elapsed).c_str(),
-               formatDuration(eta).c_str(), terminal_ ? "\x1b[K" : "\n");
-  std::fflush(stderr);
-  shown_ = true;
+  char text[256];
+  std::snprintf(text, sizeof text, "%s %5.1f%%  %.3g %s/s  elapsed %s  ETA %s", stage_.c_str(),
+                100.0 * fraction, rate, unit_.c_str(), formatDuration(elapsed).c_str(),
+                formatDuration(eta).c_str());
+  drawn_ = text;
+  if (terminal_) {
+    std::fprintf(stream_, "%s%s", kClearLine, drawn_.c_str());
+    shown_ = true;
+  } else {
+    std::fprintf(stream_, "%s\n", drawn_.c_str());
+  }
+  std::fflush(stream_);
+}
+
+void ProgressDisplay::log(const std::string& line) {
+  if (quiet_) return;
+  if (shown_) {
+    std::fprintf(stream_, "%s%s\n%s", kClearLine, line.c_str(), drawn_.c_str());
+  } else {
+    std::fprintf(stream_, "%s\n", line.c_str());
+  }
+  std::fflush(stream_);
 }
 
 void ProgressDisplay::finish() {
-  if (shown_ && terminal_) std::fputc('\n', stderr);
+  if (shown_) std::fputc('\n', stream_);
   shown_ = false;
 }
 

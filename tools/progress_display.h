@@ -1,9 +1,12 @@
 // tools/progress_display.h — progress of a long stage on the terminal: stage, fraction, rate,
 // ETA. On a terminal one line is redrawn in place; in a log, a plain line every few seconds.
-// Shown only once the stage has run for a second, so quick runs stay quiet.
+// Shown only once the stage has run for a second, so quick runs stay quiet. Log lines printed
+// through log() while the progress line is up clear it first and redraw it after, so the two
+// never run into each other.
 #pragma once
 
 #include <chrono>
+#include <cstdio>
 #include <string>
 
 namespace fluidsound::tools {
@@ -13,14 +16,23 @@ class ProgressDisplay {
   /// @param stage      what is running, e.g. "synth"
   /// @param totalUnits amount of work in `unit`s, e.g. seconds of audio
   /// @param unit       name of the unit for the rate, e.g. "s audio"
-  /// @param quiet      show nothing
+  /// @param quiet      show nothing (log() lines too)
+  /// Draws on stderr, redrawing in place if stderr is a terminal.
   ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet);
+  /// The same on `stream`, redrawn in place if `terminal`, shown after `showAfterSeconds` (for
+  /// tests and other streams).
+  ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet,
+                  std::FILE* stream, bool terminal, double showAfterSeconds);
   ~ProgressDisplay();
   ProgressDisplay(const ProgressDisplay&) = delete;
   ProgressDisplay& operator=(const ProgressDisplay&) = delete;
 
   /// @param fraction  0 … 1 of the work done
   void update(double fraction);
+
+  /// Prints one log line (a newline is added): on a terminal with the progress line up, the
+  /// progress line is cleared first and drawn again below the log line.
+  void log(const std::string& line);
 
   /// Ends the line on a terminal (if anything was shown).
   void finish();
@@ -29,8 +41,12 @@ class ProgressDisplay {
   using Clock = std::chrono::steady_clock;
   std::string stage_, unit_;
   double totalUnits_;
-  bool quiet_, terminal_;
-  bool shown_ = false;
+  double showAfterSeconds_;
+  bool quiet_;
+  std::FILE* stream_;
+  bool terminal_;
+  bool shown_ = false;  ///< the progress line is on the terminal's last line now
+  std::string drawn_;   ///< its text, to draw again after a log line
   Clock::time_point start_, lastLine_;
 };
 

@@ -44,6 +44,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
   c->add_option("-o,--output", o.output, "output folder")->required();
   c->add_flag("--fresh", o.fresh, "run every stage again, even if its artefacts are up to date");
   addCellOption(*c, o.cell);
+  addAudioOutputOptions(*c, o.audio);
   addCommonOptions(*c, o.common);
   return c;
 }
@@ -80,11 +81,12 @@ std::vector<std::string> frameFiles(const sim::Scene& scene) {
   return files;
 }
 
-/// The name of the audio file: the scene file's name without `.json` and `.scene`.
-std::string audioName(const std::filesystem::path& scene) {
+/// The name of the audio file: the scene file's name without `.json` and `.scene`, with the
+/// extension of the format asked for (`.wav` by default).
+std::string audioName(const std::filesystem::path& scene, const AudioOutputOptions& audio) {
   std::string stem = scene.stem().string();
   if (stem.size() > 6 && stem.ends_with(".scene")) stem.resize(stem.size() - 6);
-  return stem + ".wav";
+  return stem + (audioFormat(audio, stem + ".wav") == io::AudioFormat::Flac ? ".flac" : ".wav");
 }
 
 /// Checks, before the first frame, that each file the run writes into an existing OUTDIR could be
@@ -126,10 +128,13 @@ constexpr double kCentroidLowHz = 20.0, kCentroidHighHz = 20000.0;
 /// Per listener, the rendered audio's spectral centroid and the one predicted from the bubble
 /// tracks (acoustics/centroid_prediction.h, docs/synthesis.md "What the spectrum shows"); null
 /// where a channel has no energy in the band.
-Json spectrumSummary(const acoustics::BubbleTrackSet& tracks, const std::filesystem::path& audioPath) {
+Json spectrumSummary(const acoustics::BubbleTrackSet& tracks,
+                     const std::filesystem::path& audioPath,
+                     const std::optional<double>& sampleRate) {
   const io::AudioBuffer audio = io::readAudio(audioPath);
-  acoustics::SynthesisSettings settings;  // what the synth stage renders with: the file's rate and duration
-  settings.sampleRate = tracks.sampleRate;
+  // What the synth stage renders with: its rate, the file's duration.
+  acoustics::SynthesisSettings settings;
+  settings.sampleRate = sampleRate.value_or(tracks.sampleRate);
   settings.duration = tracks.duration;
   const acoustics::FrequencyBand band{kCentroidLowHz, std::min(kCentroidHighHz, audio.sampleRate / 2.0)};
   const std::vector<acoustics::PredictedSpectrum> predicted = acoustics::predictedSpectra(tracks, settings, band);
@@ -163,16 +168,17 @@ int runRunCommand(const RunOptions& o) {
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   const std::string hash = inputHash(scene);
   const std::filesystem::path out = o.output;
-  const std::string audio = audioName(scene.file);
-  requireRunOutputs(out, audio);
+  const std::string audioFile = audioName(scene.file, o.audio);
+  requireRunOutputs(out, audioFile);
   StageRecords records(out, {"simulate", "transfer", "synth", "report"}, o.fresh);
   Json stageReport = Json::object();
   // Runs `stage` unless its record shows it complete (stage_records.h: same inputs, the files it
   // reads as their producer left them, every artefact present and unchanged), then records what it
   // read and wrote, so that an interrupted or damaged run redoes exactly the stages it must.
-  const auto runStage = [&](const char* name, const std::vector<std::string>& reads,
-                            const auto& body, const std::vector<std::string>& artefacts) {
-    const std::string reason = records.reasonToRun(name, hash, reads, artefacts);
+  // `stageHash` is the stage's own input hash: the scene's, and for synth also the audio options.
+  const auto runStage = [&](const char* name, const std::vector<std::string>& reads, const auto& body,
+                            const std::vector<std::string>& artefacts, const std::string& stageHash) {
+    const std::string reason = records.reasonToRun(name, stageHash, reads, artefacts);
     const auto t0 = Clock::now();
     if (!reason.empty()) {
       if (!o.common.quiet) std::fprintf(stderr, "run: %s (%s)\n", name, reason.c_str());
@@ -181,7 +187,7 @@ int runRunCommand(const RunOptions& o) {
         if (const auto digest = records.inputDigest(name, file)) before[file] = *digest;
       records.forget(name);
       body();
-      records.complete(name, hash, std::move(before), artefacts);
+      records.complete(name, stageHash, std::move(before), artefacts);
     } else if (!o.common.quiet) {
       std::fprintf(stderr, "run: %s — up to date, reused\n", name);
     }
@@ -199,7 +205,7 @@ int runRunCommand(const RunOptions& o) {
   std::vector<std::string> simulated = frames;
   simulated.insert(simulated.end(), {"bubbles.json", "report.json"});
   runStage(
-      "simulate", {}, [&] { runSimulateCommand(simulate); }, simulated);
+      "simulate", {}, [&] { runSimulateCommand(simulate); }, simulated, hash);
   // simulate's report.json is the base of the run's report; read it before later stages change
   // anything (a reused simulation keeps its own).
   Json report = Json::parse(fileBytes(out / "report.json"), nullptr, false);
@@ -212,16 +218,18 @@ int runRunCommand(const RunOptions& o) {
   std::vector<std::string> transferReads = frames;
   transferReads.push_back("bubbles.json");
   runStage("transfer", transferReads, [&] { runTransferCommand(transfer); },
-           {"bubbles.json", "transfer.report.json"});
+           {"bubbles.json", "transfer.report.json"}, hash);
 
   SynthOptions synth;
   synth.common = o.common;
   synth.input = (out / "bubbles.json").string();
-  synth.output = (out / audioName(scene.file)).string();
+  synth.audio = o.audio;
+  synth.output = (out / audioFile).string();
   synth.spectrogram = (out / "spectrogram.png").string();
   synth.report = (out / "synth.report.json").string();
+  // The synth stage also depends on the audio options: a new --loudness renders again.
   runStage("synth", {"bubbles.json"}, [&] { runSynthCommand(synth); },
-           {audio, "spectrogram.png", "synth.report.json"});
+           {audioFile, "spectrogram.png", "synth.report.json"}, hash + " " + audioOptionsFingerprint(o.audio));
 
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
   const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);
@@ -231,15 +239,17 @@ int runRunCommand(const RunOptions& o) {
               {"stages", stageReport},
               {"bubbles", tracks.bubbles.size()},
               {"radius_histogram", radiusHistogram(tracks)},
-              {"audio", audioName(scene.file)},
+              {"audio", audioFile},
               {"spectrogram", "spectrogram.png"},
               {"seconds", std::chrono::duration<double>(Clock::now() - start).count()}};
   if (synthReport.is_object() && synthReport.contains("results")) {
     const Json& r = synthReport["results"];
     if (r.contains("peak_pascals")) run["peak_pascals"] = r["peak_pascals"];
     if (r.contains("output_peak_dbfs")) run["peak_dbfs"] = r["output_peak_dbfs"];
+    if (r.contains("audio_output"))
+      run["audio_output"] = r["audio_output"];  // scale, gain, loudness, names
   }
-  run["spectrum"] = spectrumSummary(tracks, out / audioName(scene.file));
+  run["spectrum"] = spectrumSummary(tracks, out / audioFile, o.audio.sampleRate);
   report["run"] = run;
   // The run's report.json is simulate's plus `run`: recorded as made from simulate's, so that
   // simulate's artefact still counts as intact next time.
@@ -249,8 +259,9 @@ int runRunCommand(const RunOptions& o) {
   if (simulateReport)
     records.complete("report", hash, {{"report.json", *simulateReport}}, {"report.json"});
   if (!o.common.quiet)
-    std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
-                 (out / audioName(scene.file)).string().c_str(), run["seconds"].get<double>());
+    std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n",
+                 tracks.bubbles.size(), (out / audioFile).string().c_str(),
+                 run["seconds"].get<double>());
   return kExitSuccess;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "tools/audio_options.h"
 #include "tools/command_options.h"
 
 namespace fluidsound::tools {
@@ -16,6 +17,7 @@ struct RunOptions {
   std::string output;
   bool fresh = false;  ///< run every stage even if its artefacts are up to date
   std::optional<double> cell;  ///< --cell: grid cell size [m] replacing domain.cell
+  AudioOutputOptions audio;    ///< synth's audio options, passed on to the synth stage
 };
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options);

@@ -4,9 +4,7 @@
 #include <sys/resource.h>
 
 #include <CLI/Version.hpp>
-#include <Eigen/Core>
 #include <nlohmann/json.hpp>
-#include <oneapi/tbb/version.h>
 
 #include "io/library_versions.h"
 #include "io/text_file.h"
@@ -51,6 +49,9 @@ void RunReport::stageSeconds(const std::string& stage, double seconds) {
 }
 
 void RunReport::result(const std::string& key, double value) { data_->json["results"][key] = value; }
+void RunReport::result(const std::string& key, const std::string& value) {
+  data_->json["results"][key] = value;
+}
 
 void RunReport::resultJson(const std::string& key, const std::string& jsonText) {
   data_->json["results"][key] = nlohmann::ordered_json::parse(jsonText);
@@ -62,17 +63,26 @@ double peakMemoryBytes() {
   return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux reports kilobytes
 }
 
+std::vector<std::pair<std::string, std::string>> versions() {
+  std::vector<std::pair<std::string, std::string>> list = {{"fluidsound", FLUIDSOUND_VERSION}};
+  for (auto& library : io::libraryVersions()) list.push_back(std::move(library));
+  list.emplace_back("cli11", CLI11_VERSION);
+  return list;
+}
+
 std::string versionText() {
-  return std::string("fluidsound ") + FLUIDSOUND_VERSION + "\n" +
-         "  TBB " + TBB_VERSION_STRING + "\n" +
-         "  Eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
-         "." + std::to_string(EIGEN_MINOR_VERSION) + "\n" +
-         "  CLI11 " + CLI11_VERSION + "\n" + io::libraryVersions();
+  const auto list = versions();
+  std::string text = list.front().first + " " + list.front().second + "\n";
+  for (std::size_t i = 1; i < list.size(); ++i)
+    text += "  " + list[i].first + " " + list[i].second + "\n";
+  return text;
 }
 
 void RunReport::write(const std::filesystem::path& path) {
   data_->json["peak_memory_bytes"] = peakMemoryBytes();
-  data_->json["versions"] = versionText();
+  nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
+  for (const auto& [name, version] : versions()) libraries[name] = version;
+  data_->json["versions"] = libraries;
   io::writeTextFile(path, data_->json.dump(2) + "\n");
 }
 

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "acoustics/oscillator_model.h"
 
@@ -22,10 +24,11 @@ class RunReport {
   void setOscillatorModel(const acoustics::OscillatorModel& model);
   void stageSeconds(const std::string& stage, double seconds);
   void result(const std::string& key, double value);
+  void result(const std::string& key, const std::string& value);
   /// Attaches a JSON document (text) under `key` of the results, e.g. a validation table.
   void resultJson(const std::string& key, const std::string& jsonText);
 
-  /// Adds peak memory and versions, then writes atomically.
+  /// Adds peak memory and `versions` (an object: library name → version), then writes atomically.
   /// @throws io::OutputError
   void write(const std::filesystem::path& path);
 
@@ -34,7 +37,10 @@ class RunReport {
   std::unique_ptr<Data> data_;
 };
 
-/// "fluidsound X.Y.Z" and the versions of the libraries it was built with, one per line.
+/// (name, version) of fluidsound and of every library it links (io/library_versions.h, CLI11).
+std::vector<std::pair<std::string, std::string>> versions();
+
+/// `fluidsound --version`: "fluidsound X.Y.Z", then "  NAME VERSION" per library, one per line.
 std::string versionText();
 
 /// Peak resident memory of this process [bytes].

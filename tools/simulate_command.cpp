@@ -153,10 +153,12 @@ int runSimulateCommand(const SimulateOptions& o) {
                         {"max_divergence", stats.maxDivergence}, {"max_speed", stats.maxSpeed},
                         {"bubbles_alive", bubbles.aliveCount()}, {"bubbles_total", bubbles.bubbles().size()},
                         {"seconds", seconds}});
-    if (!o.common.quiet)
-      std::fprintf(stderr, "frame %4d/%d  t %.3f s  substeps %2d  cg %4d (res %.1e)  particles %zu  %.2f s\n", f,
-                   range.last, solver.time(), stats.substeps, stats.pressureIterations, stats.pressureResidual,
-                   solver.particles().size(), seconds);
+    char line[160];  // through the display, which clears its line first on a terminal
+    std::snprintf(line, sizeof line,
+                  "frame %4d/%d  t %.3f s  substeps %2d  cg %4d (res %.1e)  particles %zu  %.2f s",
+                  f, range.last, solver.time(), stats.substeps, stats.pressureIterations,
+                  stats.pressureResidual, solver.particles().size(), seconds);
+    progress.log(line);
     progress.update(static_cast<double>(f + 1) / (range.last + 1));
   }
   progress.finish();

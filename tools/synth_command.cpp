@@ -25,14 +25,7 @@ CLI::App* addSynthCommand(CLI::App& app, SynthOptions& o) {
   CLI::App* c = app.add_subcommand("synth", "render bubble tracks (fluidsound.bubbles/1) to audio");
   c->add_option("bubbles", o.input, "bubble-track file (JSON)")->required();
   c->add_option("-o,--output", o.output, "output audio file, .wav or .flac")->required();
-  c->add_option("--rate", o.sampleRate, "sample rate in Hz (default: the file's sample_rate)")
-      ->check(CLI::Range(8000.0, 768000.0));
-  c->add_option("--format", o.format, "wav or flac (default: from the output's extension)")
-      ->check(CLI::IsMember({"wav", "flac"}, CLI::ignore_case));
-  c->add_option("--bits", o.bits, "bits per sample: 32 (float), 24 or 16 (PCM with TPDF dither)")
-      ->check(CLI::IsMember({16, 24, 32}));
-  c->add_option("--normalize", o.normalizeDbfs, "scale so the peak is at this level, dBFS (e.g. -1)")
-      ->check(CLI::Range(-120.0, 0.0));
+  addAudioOutputOptions(*c, o.audio);
   c->add_option("--duration", o.duration, "length of the render in seconds")
       ->check(CLI::PositiveNumber);
   c->add_option("--report", o.report, "run report (default: OUT with extension .report.json)");
@@ -77,7 +70,7 @@ int runSynthCommand(const SynthOptions& o) {
   const auto t1 = Clock::now();
 
   acoustics::SynthesisSettings settings;
-  settings.sampleRate = o.sampleRate.value_or(tracks.sampleRate);
+  settings.sampleRate = o.audio.sampleRate.value_or(tracks.sampleRate);
   settings.duration = o.duration ? o.duration : tracks.duration;
   settings.model = o.model;
   acoustics::SynthesisResult result;
@@ -96,19 +89,9 @@ int runSynthCommand(const SynthOptions& o) {
     note(o, std::to_string(r.depthsClamped) + " track sample(s) shallower than 1.25 R: depth shift clamped");
 
   io::AudioBuffer audio{settings.sampleRate, std::move(result.channels)};
-  io::AudioWriteSettings write;
-  write.format = o.format.empty() ? io::audioFormatFromPath(output)
-                                  : (o.format == "flac" || o.format == "FLAC" ? io::AudioFormat::Flac
-                                                                              : io::AudioFormat::Wav);
-  write.bitsPerSample = o.bits != 0 ? o.bits : (write.format == io::AudioFormat::Flac ? 24 : 32);
-  write.normalizePeakDbfs = o.normalizeDbfs;
+  const io::AudioWriteSettings write = audioWriteSettings(o.audio, output, tracks.listeners);
   const io::AudioWriteReport w = io::writeAudio(output, audio, write);
-  if (w.clippedSamples > 0)
-    std::fprintf(stderr, "fluidsound: warning: %lld sample(s) clipped at full scale; use --normalize\n",
-                 static_cast<long long>(w.clippedSamples));
-  else if (w.outputPeakDbfs > 0.0 && !o.common.quiet)
-    std::fprintf(stderr, "fluidsound: warning: peak %.3g Pa is %+.1f dBFS in a float file; players "
-                 "will clip it: use --normalize\n", w.inputPeak, w.outputPeakDbfs);
+  warnAboutAudioOutput(w, o.common.quiet);
   if (!o.spectrogram.empty()) io::writeSpectrogramPng(o.spectrogram, audio, {}, output.filename().string());
   const auto t3 = Clock::now();
 
@@ -116,7 +99,6 @@ int runSynthCommand(const SynthOptions& o) {
   report.setting("input", o.input);
   report.setting("output", o.output);
   report.setting("sample_rate", settings.sampleRate);
-  report.setting("bits", write.bitsPerSample);
   report.setOscillatorModel(settings.model);
   report.stageSeconds("read", std::chrono::duration<double>(t1 - t0).count());
   report.stageSeconds("synthesis", std::chrono::duration<double>(t2 - t1).count());
@@ -133,6 +115,7 @@ int runSynthCommand(const SynthOptions& o) {
   report.result("gain", w.gain);
   report.result("output_peak_dbfs", w.outputPeakDbfs);
   report.result("clipped_samples", static_cast<double>(w.clippedSamples));
+  reportAudioOutput(report, write, w);
   const double synthSeconds = std::chrono::duration<double>(t2 - t1).count();
   report.result("oscillator_samples_per_second",
                 synthSeconds > 0 ? static_cast<double>(r.oscillatorSamples) / synthSeconds : 0.0);

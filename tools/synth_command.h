@@ -6,6 +6,7 @@
 #include <string>
 
 #include "acoustics/oscillator_model.h"
+#include "tools/audio_options.h"
 #include "tools/command_options.h"
 
 namespace fluidsound::tools {
@@ -14,10 +15,7 @@ struct SynthOptions {
   CommonOptions common;
   std::string input;                 ///< bubble-track file
   std::string output;                ///< .wav or .flac
-  std::optional<double> sampleRate;  ///< Hz; default: the file's sample_rate
-  std::string format;                ///< wav | flac; default from the output's extension
-  int bits = 0;                      ///< 16 | 24 | 32; default 32 (WAV), 24 (FLAC)
-  std::optional<double> normalizeDbfs;
+  AudioOutputOptions audio;  ///< --rate, --format, --bits, --normalize, --loudness, --true-peak
   std::optional<double> duration;    ///< s; default: the file's, else until all have decayed
   std::string report;                ///< report path; default OUT with extension .report.json
   std::string spectrogram;           ///< also draw this PNG, if given

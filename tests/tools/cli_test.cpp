@@ -141,7 +141,8 @@ TEST_F(Cli, VersionNamesTheLibraries) {
   EXPECT_EQ(WEXITSTATUS(status), 0);
   std::stringstream text;
   text << std::ifstream(out).rdbuf();
-  for (const char* name : {"fluidsound", "TBB", "Eigen", "CLI11", "libsndfile", "cairo", "nlohmann-json"})
+  for (const char* name : {"fluidsound", "openvdb", "embree", "tbb", "eigen", "cli11", "libsndfile",
+                           "libebur128", "cairo", "nlohmann_json", "tinyobjloader"})
     EXPECT_NE(text.str().find(name), std::string::npos) << name << " missing in: " << text.str();
 }
 
