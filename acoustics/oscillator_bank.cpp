@@ -1,7 +1,9 @@
 // acoustics/oscillator_bank.cpp — SIMD inner loop of the synthesizer (see oscillator_bank.h).
-// GCC vector extensions give kOscillatorLanes float lanes; target_clones builds AVX-512 and
-// AVX2+FMA versions chosen at run time on CPUs that have them, and a baseline for the others.
-// Bits may differ between those versions (FMA), never between runs or thread counts on one CPU.
+// GCC vector extensions; one function per kernel (oscillator_kernel.h), compiled for its x86-64
+// level and running a group in slices of that level's register width: one 16-lane slice on
+// AVX-512, 8-lane halves on AVX2, 4-lane quarters on the baseline, so that a slice's state stays
+// in registers (16-lane vectors on AVX2 spilled and scalarised). The caller picks the kernel.
+// Bits differ between the fusing kernels and the baseline (FMA), never between runs or threads.
 #include "acoustics/oscillator_bank.h"
 
 namespace fluidsound::acoustics {
@@ -28,35 +30,43 @@ template <int Width>
 using Vector = typename VectorOf<Width>::type;
 
 template <typename V>
-inline V load(const float* p) {
+__attribute__((always_inline)) inline V load(const float* p) {
   V v;
   __builtin_memcpy(&v, p, sizeof v);
   return v;
 }
 template <typename V>
-inline void store(float* p, V v) {
+__attribute__((always_inline)) inline void store(float* p, V v) {
   __builtin_memcpy(p, &v, sizeof v);
 }
 
+/// The transfer of listener l at the first sample and its change per sample, for one slice.
+/// Read from the group at every sample rather than held in registers: the loads are cheap, and
+/// the registers then hold only the oscillators' state, so no kernel spills in its sample loop.
+template <typename Lanes>
+__attribute__((always_inline)) inline Lanes gainAt(const OscillatorGroup& g, int l, int lane0,
+                                                   Lanes since) {
+  return load<Lanes>(g.gain[l] + lane0) + load<Lanes>(g.gainStep[l] + lane0) * since;
+}
+
+/// One block of the lanes [lane0, lane0 + Width) of a group, on vectors of Width floats. Every
+/// kernel runs this same per-lane arithmetic, so a lane's bits do not depend on the width.
 template <int Width, int Listeners, bool Masked>
-__attribute__((always_inline)) inline void accumulate(const OscillatorGroup& g, int listeners,
-                                                      float* acc) {
+__attribute__((always_inline)) inline void accumulateSlice(const OscillatorGroup& g, int lane0,
+                                                           int listeners, float* acc) {
   using Lanes = Vector<Width>;
   const int channels = Listeners > 0 ? Listeners : listeners;
-  Lanes zr = load<Lanes>(g.zRe), zi = load<Lanes>(g.zIm), rr = load<Lanes>(g.rRe), ri = load<Lanes>(g.rIm);
-  const Lanes cr = load<Lanes>(g.cRe), ci = load<Lanes>(g.cIm);
-  Lanes gain[kMaxListeners], step[kMaxListeners];
-  for (int l = 0; l < channels; ++l) {
-    gain[l] = load<Lanes>(g.gain[l]);
-    step[l] = load<Lanes>(g.gainStep[l]);
-  }
-  const Lanes first = load<Lanes>(g.firstSample);
-  const Lanes zero = {};
-  for (int n = 0; n < kBlockSamples; ++n) {
-    float* accN = acc + n * kOscillatorLanes;
-    // The gain is evaluated, not accumulated, at each sample (g₀ + step·k), so its rounding does
-    // not grow along the block and a scaled transfer scales the output to float precision.
-    const Lanes since = (zero + static_cast<float>(n)) - first;
+  Lanes zr = load<Lanes>(g.zRe + lane0), zi = load<Lanes>(g.zIm + lane0);
+  Lanes rr = load<Lanes>(g.rRe + lane0), ri = load<Lanes>(g.rIm + lane0);
+  const Lanes cr = load<Lanes>(g.cRe + lane0), ci = load<Lanes>(g.cIm + lane0);
+  const Lanes zero = {}, one = zero + 1.0f;
+  // Samples since each lane's first, counted in the vector (exact: integers below 2²⁴), so no
+  // scalar conversion and broadcast per sample. The gain is evaluated, not accumulated, at each
+  // sample (g₀ + step·k), so its rounding does not grow along the block and a scaled transfer
+  // scales the output to float precision.
+  Lanes since = zero - load<Lanes>(g.firstSample + lane0);
+  for (int n = 0; n < kBlockSamples; ++n, since += one) {
+    float* accN = acc + n * kOscillatorLanes + lane0;
     const Lanes nzr = zr * rr - zi * ri, nzi = zr * ri + zi * rr;
     const Lanes nrr = rr * cr - ri * ci, nri = rr * ci + ri * cr;
     if constexpr (Masked) {
@@ -64,7 +74,7 @@ __attribute__((always_inline)) inline void accumulate(const OscillatorGroup& g, 
       const auto on = since >= zero;
       for (int l = 0; l < channels; ++l) {
         float* a = accN + l * kBlockSamples * kOscillatorLanes;
-        store(a, load<Lanes>(a) + (on ? (gain[l] + step[l] * since) * zi : zero));
+        store(a, load<Lanes>(a) + (on ? gainAt(g, l, lane0, since) * zi : zero));
       }
       zr = on ? nzr : zr;
       zi = on ? nzi : zi;
@@ -73,7 +83,7 @@ __attribute__((always_inline)) inline void accumulate(const OscillatorGroup& g, 
     } else {
       for (int l = 0; l < channels; ++l) {
         float* a = accN + l * kBlockSamples * kOscillatorLanes;
-        store(a, load<Lanes>(a) + (gain[l] + step[l] * since) * zi);
+        store(a, load<Lanes>(a) + gainAt(g, l, lane0, since) * zi);
       }
       zr = nzr;
       zi = nzi;
@@ -83,33 +93,85 @@ __attribute__((always_inline)) inline void accumulate(const OscillatorGroup& g, 
   }
 }
 
-template <int Width>
-__attribute__((always_inline)) inline void accumulateWidth(const OscillatorGroup& group, int listeners,
-                                                           bool masked, float* accumulator) {
-  // Fixed listener counts let the compiler keep gains in registers for the common cases.
+/// The first `activeLanes` lanes of a group in slices no wider than NativeWidth (the kernel's
+/// register) and no narrower than 4: a tail of at most 4 lanes runs on a 4-lane vector.
+template <int NativeWidth, int Listeners, bool Masked>
+__attribute__((always_inline)) inline void accumulateSlices(const OscillatorGroup& g, int listeners,
+                                                            float* acc, int activeLanes) {
+  int lane0 = 0;
+  if constexpr (NativeWidth > 8) {
+    if (activeLanes > 8) return accumulateSlice<16, Listeners, Masked>(g, 0, listeners, acc);
+  }
+  if constexpr (NativeWidth > 4) {
+    for (; activeLanes - lane0 > 4; lane0 += 8)
+      accumulateSlice<8, Listeners, Masked>(g, lane0, listeners, acc);
+  }
+  for (; lane0 < activeLanes; lane0 += 4)
+    accumulateSlice<4, Listeners, Masked>(g, lane0, listeners, acc);
+}
+
+template <int NativeWidth>
+__attribute__((always_inline)) inline void accumulateGroup(const OscillatorGroup& group,
+                                                           int listeners, bool masked,
+                                                           float* accumulator, int activeLanes) {
+  static_assert(kOscillatorLanes == 16, "slices assume 16 lanes");
+  // Fixed listener counts for the common cases, so the listener loop is unrolled.
   if (masked) {
     switch (listeners) {
-      case 1: return accumulate<Width, 1, true>(group, listeners, accumulator);
-      case 2: return accumulate<Width, 2, true>(group, listeners, accumulator);
-      default: return accumulate<Width, 0, true>(group, listeners, accumulator);
+      case 1:
+        return accumulateSlices<NativeWidth, 1, true>(group, listeners, accumulator, activeLanes);
+      case 2:
+        return accumulateSlices<NativeWidth, 2, true>(group, listeners, accumulator, activeLanes);
+      default:
+        return accumulateSlices<NativeWidth, 0, true>(group, listeners, accumulator, activeLanes);
     }
   }
   switch (listeners) {
-    case 1: return accumulate<Width, 1, false>(group, listeners, accumulator);
-    case 2: return accumulate<Width, 2, false>(group, listeners, accumulator);
-    default: return accumulate<Width, 0, false>(group, listeners, accumulator);
+    case 1:
+      return accumulateSlices<NativeWidth, 1, false>(group, listeners, accumulator, activeLanes);
+    case 2:
+      return accumulateSlices<NativeWidth, 2, false>(group, listeners, accumulator, activeLanes);
+    default:
+      return accumulateSlices<NativeWidth, 0, false>(group, listeners, accumulator, activeLanes);
   }
+}
+
+// One function per kernel, each compiled for its x86-64 level (the names
+// cpuRunsOscillatorKernel checks) and running the slices that fit that level's registers; not
+// inlined, so each has its own symbol for a look at its code (tools/check_kernel_code.py).
+__attribute__((target("arch=x86-64-v4"), noinline)) void accumulateAvx512(const OscillatorGroup& group,
+                                                                int listeners, bool masked,
+                                                                float* accumulator,
+                                                                int activeLanes) {
+  accumulateGroup<16>(group, listeners, masked, accumulator, activeLanes);
+}
+
+__attribute__((target("arch=x86-64-v3"), noinline)) void accumulateAvx2(const OscillatorGroup& group,
+                                                              int listeners, bool masked,
+                                                              float* accumulator, int activeLanes) {
+  accumulateGroup<8>(group, listeners, masked, accumulator, activeLanes);
+}
+
+// arch=x86-64 also when the file is built with -march=native: the baseline never fuses.
+__attribute__((target("arch=x86-64"), noinline)) void accumulateBaseline(const OscillatorGroup& group,
+                                                               int listeners, bool masked,
+                                                               float* accumulator,
+                                                               int activeLanes) {
+  accumulateGroup<4>(group, listeners, masked, accumulator, activeLanes);
 }
 
 }  // namespace
 
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-void accumulateOscillatorGroup(const OscillatorGroup& group, int listeners, bool masked,
-                               float* accumulator, int activeLanes) {
-  static_assert(kOscillatorLanes == 16, "widths below assume 16 lanes");
-  if (activeLanes <= 4) return accumulateWidth<4>(group, listeners, masked, accumulator);
-  if (activeLanes <= 8) return accumulateWidth<8>(group, listeners, masked, accumulator);
-  return accumulateWidth<16>(group, listeners, masked, accumulator);
+void accumulateOscillatorGroup(OscillatorKernel kernel, const OscillatorGroup& group, int listeners,
+                               bool masked, float* accumulator, int activeLanes) {
+  switch (kernel) {
+    case OscillatorKernel::avx512:
+      return accumulateAvx512(group, listeners, masked, accumulator, activeLanes);
+    case OscillatorKernel::avx2:
+      return accumulateAvx2(group, listeners, masked, accumulator, activeLanes);
+    case OscillatorKernel::baseline:
+      return accumulateBaseline(group, listeners, masked, accumulator, activeLanes);
+  }
 }
 
 namespace {
@@ -137,8 +199,8 @@ __attribute__((always_inline)) inline float pairwiseSum(const float* lanes) {
 }
 
 template <int Width>
-__attribute__((always_inline)) inline void sumLanes(const float* accumulator, int listeners, int count,
-                                                    float* const* output) {
+__attribute__((always_inline)) inline void sumLanes(const float* accumulator, int listeners,
+                                                    int count, float* const* output) {
   for (int l = 0; l < listeners; ++l) {
     const float* a = accumulator + l * kBlockSamples * kOscillatorLanes;
     for (int n = 0; n < count; ++n) output[l][n] = pairwiseSum<Width>(a + n * kOscillatorLanes);
@@ -147,9 +209,9 @@ __attribute__((always_inline)) inline void sumLanes(const float* accumulator, in
 
 }  // namespace
 
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-void sumOscillatorLanes(const float* accumulator, int listeners, int count, float* const* output,
-                        int activeLanes) {
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
+sumOscillatorLanes(const float* accumulator, int listeners, int count, float* const* output,
+                   int activeLanes) {
   static_assert(kOscillatorLanes == 16, "widths below assume 16 lanes");
   if (activeLanes <= 4) return sumLanes<4>(accumulator, listeners, count, output);
   if (activeLanes <= 8) return sumLanes<8>(accumulator, listeners, count, output);

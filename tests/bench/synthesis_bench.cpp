@@ -1,8 +1,10 @@
 // Synthesis throughput in oscillator-samples per second (one bubble advanced by one sample = one
 // oscillator-sample), for 1 k, 10 k and 100 k bubbles with moving depth and transfer on two
 // listeners, and two baselines in the same run: a per-sample sin/exp loop and a plain
-// single-thread complex-rotation loop at constant frequency. Run: build/tests/fluidsound_bench
-// (or tools/bench.sh, which also prints the ratios).
+// single-thread complex-rotation loop at constant frequency. Each synthesis figure is labelled
+// with the oscillator kernel that ran (oscillator_kernel.h): BM_Synthesize runs the one the
+// synthesizer picks on this CPU, BM_SynthesizeWithKernel each one the CPU can run. Run:
+// build/tests/fluidsound_bench (or tools/bench.sh, which also prints the ratios).
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
 
@@ -10,8 +12,11 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <string>
 
+#include "acoustics/oscillator_kernel.h"
 #include "acoustics/synthesizer.h"
 
 namespace {
@@ -46,21 +51,44 @@ BubbleTrackSet movingBubbles(std::size_t count, double span) {
   return set;
 }
 
-void BM_Synthesize(benchmark::State& state) {
+void synthesizeMovingBubbles(benchmark::State& state, std::optional<OscillatorKernel> kernel) {
   const auto count = static_cast<std::size_t>(state.range(0));
   const BubbleTrackSet set = movingBubbles(count, 10.0);
   SynthesisSettings settings;
+  settings.kernel = kernel;
   std::int64_t samples = 0;
+  OscillatorKernel ran = OscillatorKernel::baseline;
   for (auto _ : state) {
     SynthesisResult r = synthesize(set, settings);
     benchmark::DoNotOptimize(r.channels[0].data());
     samples += r.report.oscillatorSamples;
+    ran = r.report.kernel;
   }
   state.SetItemsProcessed(samples);
+  state.SetLabel(std::string(oscillatorKernelName(ran)));
   state.counters["threads"] = oneapi::tbb::info::default_concurrency();
   state.counters["bubbles"] = static_cast<double>(count);
 }
+
+/// The kernel the synthesizer picks on this CPU (the label says which).
+void BM_Synthesize(benchmark::State& state) { synthesizeMovingBubbles(state, std::nullopt); }
 BENCHMARK(BM_Synthesize)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// Each kernel by its index in kOscillatorKernels (0 baseline, 1 AVX2, 2 AVX-512), for a figure of
+/// a narrower kernel on a wider CPU; skipped where the CPU cannot run it.
+void BM_SynthesizeWithKernel(benchmark::State& state) {
+  const OscillatorKernel kernel = kOscillatorKernels[state.range(1)];
+  if (!cpuRunsOscillatorKernel(kernel)) {
+    state.SkipWithError(("this CPU cannot run " + std::string(oscillatorKernelName(kernel))).c_str());
+    return;
+  }
+  synthesizeMovingBubbles(state, kernel);
+}
+BENCHMARK(BM_SynthesizeWithKernel)
+    ->ArgsProduct({{1000, 10000, 100000}, {0, 1, 2}})
+    ->ArgNames({"bubbles", "kernel"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 constexpr int kBaselineOscillators = 256;
 constexpr int kBaselineSamples = 48000;
