@@ -49,65 +49,87 @@ __attribute__((always_inline)) inline Lanes gainAt(const OscillatorGroup& g, int
   return load<Lanes>(g.gain[l] + lane0) + load<Lanes>(g.gainStep[l] + lane0) * since;
 }
 
-/// One block of the lanes [lane0, lane0 + Width) of a group, on vectors of Width floats. Every
-/// kernel runs this same per-lane arithmetic, so a lane's bits do not depend on the width.
-template <int Width, int Listeners, bool Masked>
-__attribute__((always_inline)) inline void accumulateSlice(const OscillatorGroup& g, int lane0,
-                                                           int listeners, float* acc) {
+/// One block of Slices slices of Width lanes from lane0 on, on vectors of Width floats, the slices
+/// interleaved sample by sample (two independent recurrences hide each other's latency). Every
+/// kernel runs this same per-lane arithmetic, so a lane's bits depend neither on the width nor on
+/// the interleaving. Only z, r and the sample count live in registers; c and the gains are read
+/// from the group (cheap loads), so that two 8-lane slices fit AVX2's 16 registers.
+template <int Width, int Slices, int Listeners, bool Masked>
+__attribute__((always_inline)) inline void accumulateSlices(const OscillatorGroup& g, int lane0,
+                                                            int listeners, float* acc) {
   using Lanes = Vector<Width>;
   const int channels = Listeners > 0 ? Listeners : listeners;
-  Lanes zr = load<Lanes>(g.zRe + lane0), zi = load<Lanes>(g.zIm + lane0);
-  Lanes rr = load<Lanes>(g.rRe + lane0), ri = load<Lanes>(g.rIm + lane0);
-  const Lanes cr = load<Lanes>(g.cRe + lane0), ci = load<Lanes>(g.cIm + lane0);
   const Lanes zero = {}, one = zero + 1.0f;
-  // Samples since each lane's first, counted in the vector (exact: integers below 2²⁴), so no
-  // scalar conversion and broadcast per sample. The gain is evaluated, not accumulated, at each
-  // sample (g₀ + step·k), so its rounding does not grow along the block and a scaled transfer
-  // scales the output to float precision.
-  Lanes since = zero - load<Lanes>(g.firstSample + lane0);
-  for (int n = 0; n < kBlockSamples; ++n, since += one) {
-    float* accN = acc + n * kOscillatorLanes + lane0;
-    const Lanes nzr = zr * rr - zi * ri, nzi = zr * ri + zi * rr;
-    const Lanes nrr = rr * cr - ri * ci, nri = rr * ci + ri * cr;
-    if constexpr (Masked) {
-      // Before its first sample a lane adds nothing and its state stands still.
-      const auto on = since >= zero;
-      for (int l = 0; l < channels; ++l) {
-        float* a = accN + l * kBlockSamples * kOscillatorLanes;
-        store(a, load<Lanes>(a) + (on ? gainAt(g, l, lane0, since) * zi : zero));
+  Lanes zr[Slices], zi[Slices], rr[Slices], ri[Slices], since[Slices];
+#pragma GCC unroll 2
+  for (int h = 0; h < Slices; ++h) {
+    const int first = lane0 + h * Width;
+    zr[h] = load<Lanes>(g.zRe + first);
+    zi[h] = load<Lanes>(g.zIm + first);
+    rr[h] = load<Lanes>(g.rRe + first);
+    ri[h] = load<Lanes>(g.rIm + first);
+    // Samples since each lane's first, counted in the vector (exact: integers below 2²⁴), so
+    // no scalar conversion and broadcast per sample.
+    since[h] = zero - load<Lanes>(g.firstSample + first);
+  }
+  for (int n = 0; n < kBlockSamples; ++n) {
+#pragma GCC unroll 2
+    for (int h = 0; h < Slices; ++h) {
+      const int first = lane0 + h * Width;
+      float* accN = acc + n * kOscillatorLanes + first;
+      const Lanes cr = load<Lanes>(g.cRe + first), ci = load<Lanes>(g.cIm + first);
+      const Lanes nzr = zr[h] * rr[h] - zi[h] * ri[h], nzi = zr[h] * ri[h] + zi[h] * rr[h];
+      const Lanes nrr = rr[h] * cr - ri[h] * ci, nri = rr[h] * ci + ri[h] * cr;
+      // The gain is evaluated, not accumulated, at each sample (g₀ + step·k), so its rounding
+      // does not grow along the block and a scaled transfer scales the output to float precision.
+      if constexpr (Masked) {
+        // Before its first sample a lane adds nothing and its state stands still.
+        const auto on = since[h] >= zero;
+        for (int l = 0; l < channels; ++l) {
+          float* a = accN + l * kBlockSamples * kOscillatorLanes;
+          store(a, load<Lanes>(a) + (on ? gainAt(g, l, first, since[h]) * zi[h] : zero));
+        }
+        zr[h] = on ? nzr : zr[h];
+        zi[h] = on ? nzi : zi[h];
+        rr[h] = on ? nrr : rr[h];
+        ri[h] = on ? nri : ri[h];
+      } else {
+        for (int l = 0; l < channels; ++l) {
+          float* a = accN + l * kBlockSamples * kOscillatorLanes;
+          store(a, load<Lanes>(a) + gainAt(g, l, first, since[h]) * zi[h]);
+        }
+        zr[h] = nzr;
+        zi[h] = nzi;
+        rr[h] = nrr;
+        ri[h] = nri;
       }
-      zr = on ? nzr : zr;
-      zi = on ? nzi : zi;
-      rr = on ? nrr : rr;
-      ri = on ? nri : ri;
-    } else {
-      for (int l = 0; l < channels; ++l) {
-        float* a = accN + l * kBlockSamples * kOscillatorLanes;
-        store(a, load<Lanes>(a) + gainAt(g, l, lane0, since) * zi);
-      }
-      zr = nzr;
-      zi = nzi;
-      rr = nrr;
-      ri = nri;
+      since[h] += one;
     }
   }
 }
 
 /// The first `activeLanes` lanes of a group in slices no wider than NativeWidth (the kernel's
-/// register) and no narrower than 4: a tail of at most 4 lanes runs on a 4-lane vector.
+/// register) and no narrower than 4: a tail of at most 4 lanes runs on a 4-lane vector. On AVX2
+/// a full group with one or two listeners runs its two 8-lane halves interleaved; masked groups
+/// (a few per block) and more listeners would not fit the registers that way, and run the halves
+/// one after the other.
 template <int NativeWidth, int Listeners, bool Masked>
-__attribute__((always_inline)) inline void accumulateSlices(const OscillatorGroup& g, int listeners,
-                                                            float* acc, int activeLanes) {
+__attribute__((always_inline)) inline void accumulateGroupSlices(const OscillatorGroup& g,
+                                                                 int listeners, float* acc,
+                                                                 int activeLanes) {
   int lane0 = 0;
   if constexpr (NativeWidth > 8) {
-    if (activeLanes > 8) return accumulateSlice<16, Listeners, Masked>(g, 0, listeners, acc);
+    if (activeLanes > 8) return accumulateSlices<16, 1, Listeners, Masked>(g, 0, listeners, acc);
+  }
+  if constexpr (NativeWidth == 8 && !Masked && Listeners > 0) {
+    if (activeLanes > 12) return accumulateSlices<8, 2, Listeners, Masked>(g, 0, listeners, acc);
   }
   if constexpr (NativeWidth > 4) {
     for (; activeLanes - lane0 > 4; lane0 += 8)
-      accumulateSlice<8, Listeners, Masked>(g, lane0, listeners, acc);
+      accumulateSlices<8, 1, Listeners, Masked>(g, lane0, listeners, acc);
   }
   for (; lane0 < activeLanes; lane0 += 4)
-    accumulateSlice<4, Listeners, Masked>(g, lane0, listeners, acc);
+    accumulateSlices<4, 1, Listeners, Masked>(g, lane0, listeners, acc);
 }
 
 template <int NativeWidth>
@@ -119,44 +141,45 @@ __attribute__((always_inline)) inline void accumulateGroup(const OscillatorGroup
   if (masked) {
     switch (listeners) {
       case 1:
-        return accumulateSlices<NativeWidth, 1, true>(group, listeners, accumulator, activeLanes);
+        return accumulateGroupSlices<NativeWidth, 1, true>(group, listeners, accumulator,
+                                                           activeLanes);
       case 2:
-        return accumulateSlices<NativeWidth, 2, true>(group, listeners, accumulator, activeLanes);
+        return accumulateGroupSlices<NativeWidth, 2, true>(group, listeners, accumulator,
+                                                           activeLanes);
       default:
-        return accumulateSlices<NativeWidth, 0, true>(group, listeners, accumulator, activeLanes);
+        return accumulateGroupSlices<NativeWidth, 0, true>(group, listeners, accumulator,
+                                                           activeLanes);
     }
   }
   switch (listeners) {
     case 1:
-      return accumulateSlices<NativeWidth, 1, false>(group, listeners, accumulator, activeLanes);
+      return accumulateGroupSlices<NativeWidth, 1, false>(group, listeners, accumulator,
+                                                          activeLanes);
     case 2:
-      return accumulateSlices<NativeWidth, 2, false>(group, listeners, accumulator, activeLanes);
+      return accumulateGroupSlices<NativeWidth, 2, false>(group, listeners, accumulator,
+                                                          activeLanes);
     default:
-      return accumulateSlices<NativeWidth, 0, false>(group, listeners, accumulator, activeLanes);
+      return accumulateGroupSlices<NativeWidth, 0, false>(group, listeners, accumulator,
+                                                          activeLanes);
   }
 }
 
 // One function per kernel, each compiled for its x86-64 level (the names
 // cpuRunsOscillatorKernel checks) and running the slices that fit that level's registers; not
 // inlined, so each has its own symbol for a look at its code (tools/check_kernel_code.py).
-__attribute__((target("arch=x86-64-v4"), noinline)) void accumulateAvx512(const OscillatorGroup& group,
-                                                                int listeners, bool masked,
-                                                                float* accumulator,
-                                                                int activeLanes) {
+__attribute__((target("arch=x86-64-v4"), noinline)) void accumulateAvx512(
+    const OscillatorGroup& group, int listeners, bool masked, float* accumulator, int activeLanes) {
   accumulateGroup<16>(group, listeners, masked, accumulator, activeLanes);
 }
 
-__attribute__((target("arch=x86-64-v3"), noinline)) void accumulateAvx2(const OscillatorGroup& group,
-                                                              int listeners, bool masked,
-                                                              float* accumulator, int activeLanes) {
+__attribute__((target("arch=x86-64-v3"), noinline)) void accumulateAvx2(
+    const OscillatorGroup& group, int listeners, bool masked, float* accumulator, int activeLanes) {
   accumulateGroup<8>(group, listeners, masked, accumulator, activeLanes);
 }
 
 // arch=x86-64 also when the file is built with -march=native: the baseline never fuses.
-__attribute__((target("arch=x86-64"), noinline)) void accumulateBaseline(const OscillatorGroup& group,
-                                                               int listeners, bool masked,
-                                                               float* accumulator,
-                                                               int activeLanes) {
+__attribute__((target("arch=x86-64"), noinline)) void accumulateBaseline(
+    const OscillatorGroup& group, int listeners, bool masked, float* accumulator, int activeLanes) {
   accumulateGroup<4>(group, listeners, masked, accumulator, activeLanes);
 }
 

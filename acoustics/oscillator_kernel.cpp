@@ -6,11 +6,11 @@ namespace fluidsound::acoustics {
 std::string_view oscillatorKernelName(OscillatorKernel kernel) {
   switch (kernel) {
     case OscillatorKernel::baseline:
-      return "x86-64 (SSE2, 4 lanes)";
+      return "x86-64 (SSE2) 4 lanes";
     case OscillatorKernel::avx2:
-      return "x86-64-v3 (AVX2+FMA, 8 lanes)";
+      return "x86-64-v3 (AVX2+FMA) 8 lanes";
     case OscillatorKernel::avx512:
-      return "x86-64-v4 (AVX-512, 16 lanes)";
+      return "x86-64-v4 (AVX-512) 16 lanes";
   }
   return "unknown";
 }

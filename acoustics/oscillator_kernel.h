@@ -17,7 +17,8 @@ enum class OscillatorKernel {
 inline constexpr OscillatorKernel kOscillatorKernels[] = {
     OscillatorKernel::baseline, OscillatorKernel::avx2, OscillatorKernel::avx512};
 
-/// @brief A short name for logs and benchmark labels, e.g. "x86-64-v3 (AVX2+FMA, 8 lanes)".
+/// @brief A short name for logs and benchmark labels, e.g. "x86-64-v3 (AVX2+FMA) 8 lanes" (no
+///        comma: it is a field of the benchmark's CSV).
 std::string_view oscillatorKernelName(OscillatorKernel kernel);
 
 /// @brief Whether this CPU has every instruction `kernel` uses (calling one it lacks would

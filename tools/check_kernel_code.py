@@ -9,7 +9,8 @@ kernel's loops (the address ranges spanned by its backward branches), counts
 
 - scalar float instructions: [v]movss, [v]addss, [v]subss, [v]mulss, [v]divss, the scalar FMAs
   (vfmadd*ss, vfmsub*ss, vfnmadd*ss, vfnmsub*ss), [v]insertps, [v]extractps, [v]cvtsi2ss:
-  lane work done one float at a time;
+  lane work done one float at a time (a movss of a constant from the constant pool, %rip-relative,
+  is the first step of broadcasting it, not lane work, and is not counted);
 - stack accesses: any operand addressed from %rsp or %rbp (a spill is a store there and a load
   back), split into stores and loads;
 - the vector registers used (zmm, ymm, xmm), which show the width each kernel runs at.
@@ -28,6 +29,7 @@ import sys
 KERNELS = ("accumulateAvx512", "accumulateAvx2", "accumulateBaseline")
 SCALAR = re.compile(r"^v?(mov|add|sub|mul|div)ss$|^vf(n?)m(add|sub)\d+ss$|^v?(insert|extract)ps$"
                     r"|^v?cvtsi2ssl?q?$")
+CONSTANT_LOAD = re.compile(r"^-?(0x[0-9a-f]+)?\(%rip\),%xmm\d+$")
 STACK = re.compile(r"\((%rsp|%rbp)[,)]")
 FUNCTION = re.compile(r"^([0-9a-f]+) <(.*)>:$")
 INSTRUCTION = re.compile(r"^\s+([0-9a-f]+):\s+(\S+)\s*(.*)$")
@@ -46,7 +48,8 @@ def disassemble(path):
             continue
         match = INSTRUCTION.match(line)
         if match and current is not None:
-            current.append((int(match.group(1), 16), match.group(2), match.group(3)))
+            operands = match.group(3).split("#")[0].strip()  # drop objdump's address comment
+            current.append((int(match.group(1), 16), match.group(2), operands))
     return functions
 
 
@@ -80,7 +83,8 @@ def main():
             clean = False
             continue
         body, loops = loop_instructions(functions[names[0]])
-        scalar = sum(1 for _, mnemonic, _ in body if SCALAR.match(mnemonic))
+        scalar = sum(1 for _, mnemonic, operands in body
+                     if SCALAR.match(mnemonic) and not CONSTANT_LOAD.match(operands))
         accesses = [stack_access(operands) for _, _, operands in body]
         stores, loads = accesses.count("store"), accesses.count("load")
         widths = {reg: sum(1 for _, _, operands in body if f"%{reg}" in operands)
