@@ -232,6 +232,8 @@ __attribute__((always_inline)) inline void sumLanes(const float* accumulator, in
 
 }  // namespace
 
+// The lane sums are additions only, the same bits in every clone, and run once per block (not
+// once per group): the resolver's choice is enough here.
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
 sumOscillatorLanes(const float* accumulator, int listeners, int count, float* const* output,
                    int activeLanes) {

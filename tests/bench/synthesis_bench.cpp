@@ -3,7 +3,9 @@
 // listeners, and two baselines in the same run: a per-sample sin/exp loop and a plain
 // single-thread complex-rotation loop at constant frequency. Each synthesis figure is labelled
 // with the oscillator kernel that ran (oscillator_kernel.h): BM_Synthesize runs the one the
-// synthesizer picks on this CPU, BM_SynthesizeWithKernel each one the CPU can run. Run:
+// synthesizer picks on this CPU, BM_SynthesizeWithKernel each one the CPU can run. Their items/s
+// are per second of real time; their CPU time is that of all threads, so items ÷ CPU time is the
+// throughput per busy core, a figure that holds on a shared machine. Run:
 // build/tests/fluidsound_bench (or tools/bench.sh, which also prints the ratios).
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
@@ -65,7 +67,7 @@ void synthesizeMovingBubbles(benchmark::State& state, std::optional<OscillatorKe
     samples += r.report.oscillatorSamples;
     ran = r.report.kernel;
   }
-  state.SetItemsProcessed(samples);
+  state.SetItemsProcessed(samples);  // per second of real time: what a user waits
   state.SetLabel(std::string(oscillatorKernelName(ran)));
   state.counters["threads"] = oneapi::tbb::info::default_concurrency();
   state.counters["bubbles"] = static_cast<double>(count);
@@ -73,7 +75,13 @@ void synthesizeMovingBubbles(benchmark::State& state, std::optional<OscillatorKe
 
 /// The kernel the synthesizer picks on this CPU (the label says which).
 void BM_Synthesize(benchmark::State& state) { synthesizeMovingBubbles(state, std::nullopt); }
-BENCHMARK(BM_Synthesize)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Synthesize)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
 /// Each kernel by its index in kOscillatorKernels (0 baseline, 1 AVX2, 2 AVX-512), for a figure of
 /// a narrower kernel on a wider CPU; skipped where the CPU cannot run it.
@@ -90,7 +98,8 @@ BENCHMARK(BM_SynthesizeWithKernel)
     ->ArgsProduct({{1000, 10000, 100000}, {0, 1, 2}})
     ->ArgNames({"bubbles", "kernel"})
     ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
 constexpr int kBaselineOscillators = 256;
 constexpr int kBaselineSamples = 48000;
