@@ -19,7 +19,9 @@ It prints one line per kernel and exits 1 if any kernel has a scalar instruction
 access inside a loop (0 if none), so it can be run after a compiler or code change.
 
 usage: tools/check_kernel_code.py [OBJECT]
-  OBJECT  default build/acoustics/CMakeFiles/fluidsound_acoustics.dir/oscillator_bank.cpp.o
+  OBJECT  an object file or the library archive that holds oscillator_bank.cpp's code (ctest runs
+          it on build/acoustics/libfluidsound_acoustics.a); default
+          build/acoustics/CMakeFiles/fluidsound_acoustics.dir/oscillator_bank.cpp.o
 """
 import pathlib
 import re
