@@ -7,9 +7,12 @@
 
 #include <cstddef>
 
+#include "acoustics/oscillator_kernel.h"
+
 namespace fluidsound::acoustics {
 
-/// Oscillators processed side by side: one AVX-512 register of floats (two on AVX2).
+/// Oscillators in one group: one AVX-512 register of floats; the AVX2 kernel runs a group as two
+/// 8-lane halves, the baseline as four 4-lane quarters (oscillator_kernel.h).
 inline constexpr int kOscillatorLanes = 16;
 
 /// Samples in one synthesis block: per-frame values are interpolated to block boundaries and vary
@@ -36,14 +39,18 @@ struct OscillatorGroup {
 };
 
 /// @brief Adds Σ_lanes gain·Im z to `accumulator` over one block.
+/// @param kernel       instruction-set version; the CPU must run it (cpuRunsOscillatorKernel).
+///                     Each lane's arithmetic is the same in every kernel except that the AVX2 and
+///                     AVX-512 ones fuse multiply-adds (FMA): those two agree bit for bit, the
+///                     baseline differs from them in the last bits.
 /// @param group        oscillators; all lanes start at offset 0 unless `masked`
 /// @param listeners    number of channels, 1 … kMaxListeners
 /// @param masked       honour firstSample: a lane is silent and frozen before its first sample
 /// @param accumulator  [listeners][kBlockSamples][kOscillatorLanes] floats, added to (lanes are
 ///                     summed later, in a fixed order, so results do not depend on threads)
 /// @param activeLanes  lanes in use, counted from lane 0; a group with few runs on narrower vectors
-void accumulateOscillatorGroup(const OscillatorGroup& group, int listeners, bool masked,
-                               float* accumulator, int activeLanes = kOscillatorLanes);
+void accumulateOscillatorGroup(OscillatorKernel kernel, const OscillatorGroup& group, int listeners,
+                               bool masked, float* accumulator, int activeLanes = kOscillatorLanes);
 
 /// @brief Sums the lanes of `accumulator` (as filled by accumulateOscillatorGroup) into
 ///        `output[l][0 … count)`, overwriting it, by a fixed pairwise tree (deterministic, and

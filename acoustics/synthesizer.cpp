@@ -14,6 +14,8 @@
 #include <numbers>
 #include <optional>
 #include <span>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -70,6 +72,7 @@ struct VoiceState {
 /// Everything a segment needs about the whole render.
 struct RenderContext {
   const SynthesisSettings& settings;
+  OscillatorKernel kernel;
   std::size_t channels;
   double dt;                      ///< sample period [s]
   std::int64_t frames;
@@ -180,7 +183,7 @@ int accumulateLanes(const std::vector<float>& lanes, bool masked, const RenderCo
       }
     }
     const int used = static_cast<int>(std::min<std::size_t>(kOscillatorLanes, count - first));
-    accumulateOscillatorGroup(g, static_cast<int>(ctx.channels), masked, accumulator, used);
+    accumulateOscillatorGroup(ctx.kernel, g, static_cast<int>(ctx.channels), masked, accumulator, used);
     widest = std::max(widest, used);
   }
   return widest;
@@ -258,6 +261,10 @@ SynthesisResult synthesize(const BubbleTrackSet& tracks, const SynthesisSettings
                            const ProgressCallback& progress) {
   SynthesisResult result;
   SynthesisReport& report = result.report;
+  report.kernel = settings.kernel.value_or(fastestOscillatorKernel());
+  if (!cpuRunsOscillatorKernel(report.kernel))
+    throw std::invalid_argument("synthesize: this CPU cannot run the oscillator kernel " +
+                                std::string(oscillatorKernelName(report.kernel)));
   const std::size_t channels = tracks.channelCount();
   const double fs = settings.sampleRate;
   const double nyquistAngular = std::numbers::pi * fs;
@@ -323,7 +330,7 @@ SynthesisResult synthesize(const BubbleTrackSet& tracks, const SynthesisSettings
   }
 
   result.channels.assign(channels, std::vector<float>(static_cast<std::size_t>(frames)));
-  const RenderContext ctx{settings, channels, 1.0 / fs, frames};
+  const RenderContext ctx{settings, report.kernel, channels, 1.0 / fs, frames};
   const std::int64_t totalBlocks = (frames + kBlockSamples - 1) / kBlockSamples;
   const std::int64_t segments = (totalBlocks + kSegmentBlocks - 1) / kSegmentBlocks;
   tbb::enumerable_thread_specific<SegmentScratch> scratch;

@@ -10,6 +10,7 @@
 
 #include "acoustics/bubble_track.h"
 #include "acoustics/liquid_properties.h"
+#include "acoustics/oscillator_kernel.h"
 #include "acoustics/oscillator_model.h"
 
 namespace fluidsound::acoustics {
@@ -21,6 +22,9 @@ struct SynthesisSettings {
   double cutoffDecibels = 90.0;     ///< a bubble stops once it has decayed by this much [dB]
   LiquidProperties liquid;          ///< water at 20 °C
   OscillatorModel model;            ///< physics choices (docs/physics.md)
+  /// Instruction-set version of the inner loop; default: the fastest this CPU runs. One the CPU
+  /// cannot run is refused (std::invalid_argument) before any work.
+  std::optional<OscillatorKernel> kernel;
 };
 
 /// What the render did, for the log and report.json.
@@ -32,6 +36,7 @@ struct SynthesisReport {
   std::int64_t depthsClamped = 0;       ///< track samples shallower than 1.25 R (shift clamped)
   std::int64_t frames = 0;              ///< samples per channel
   double peakPascals = 0.0;             ///< largest |sample| over all channels [Pa]
+  OscillatorKernel kernel = OscillatorKernel::baseline;  ///< the inner loop that ran
 };
 
 /// The rendered sound: pressure [Pa] per listener, and the report.
@@ -50,6 +55,7 @@ using ProgressCallback = std::function<void(double fraction)>;
 ///        chirp (option). Depth and transfer are interpolated smoothly from the track samples.
 /// @param tracks    validated bubble tracks (io/ validates files)
 /// @param progress  optional; called from the calling thread
+/// @throw std::invalid_argument if settings.kernel names a kernel this CPU cannot run
 /// @note Parallel over time segments with TBB; bit-identical output for any thread count.
 ///       Memory: the output plus O(bubbles).
 SynthesisResult synthesize(const BubbleTrackSet& tracks, const SynthesisSettings& settings,

@@ -9,10 +9,12 @@
 #include <cstring>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "acoustics/bubble_oscillator.h"
 #include "acoustics/depth_shift.h"
 #include "acoustics/oscillator_bank.h"
+#include "acoustics/oscillator_kernel.h"
 #include "acoustics/tone_analysis.h"
 #include "acoustics/track_interpolation.h"
 #include "acoustics/validation.h"
@@ -123,8 +125,14 @@ TEST(Synthesizer, DeepBubbleEqualsAnalyticDampedSineForOffGridBirth) {
 // is compared with a double-precision reference that integrates φ with 16 sub-steps per sample,
 // using the same interpolated depth. An explicit midpoint step would detune by ~3 % (issue text);
 // the exact recurrence stays within float precision: allow 2e-3 of A (phase error ≤ 2e-3 rad).
-TEST(Synthesizer, MovingBubblePhaseIntegratesInstantaneousFrequency) {
+// Through every oscillator kernel the CPU runs (oscillator_kernel.h), each called explicitly.
+class MovingBubbleThroughKernel : public ::testing::TestWithParam<OscillatorKernel> {};
+
+TEST_P(MovingBubbleThroughKernel, PhaseIntegratesInstantaneousFrequency) {
+  if (!cpuRunsOscillatorKernel(GetParam()))
+    GTEST_SKIP() << "this CPU cannot run " << oscillatorKernelName(GetParam());
   SynthesisSettings s = defaultSettings();
+  s.kernel = GetParam();
   const double radius = 2e-3;
   BubbleTrackSet set;
   set.bubbles.push_back(risingBubble(radius, 0.0, 20e-3, 3e-3, 1));
@@ -144,8 +152,21 @@ TEST(Synthesizer, MovingBubblePhaseIntegratesInstantaneousFrequency) {
       phase += reference.at(t + (k + 0.5) / (kSubSteps * kSampleRate)).second /
                (kSubSteps * kSampleRate);
   }
-  EXPECT_LT(worst, 2e-3 * c.amplitude) << "worst deviation " << worst << " Pa";
+  EXPECT_LT(worst, 2e-3 * c.amplitude)
+      << oscillatorKernelName(GetParam()) << ": worst deviation " << worst << " Pa";
 }
+
+std::string kernelTestName(const ::testing::TestParamInfo<OscillatorKernel>& info) {
+  switch (info.param) {
+    case OscillatorKernel::baseline: return "Baseline";
+    case OscillatorKernel::avx2: return "Avx2";
+    case OscillatorKernel::avx512: return "Avx512";
+  }
+  return "Unknown";
+}
+
+INSTANTIATE_TEST_SUITE_P(Synthesizer, MovingBubbleThroughKernel, ::testing::ValuesIn(kOscillatorKernels),
+                         kernelTestName);
 
 // Validation matrix #5 (physics.md §9, T3): at a constant depth h below a pressure-release surface
 // the measured frequency ratio f(h)/f∞ equals Strasberg's (1 − x − x⁴)^(−1/2), x = R/2h, within
@@ -227,10 +248,16 @@ BubbleTrackSet manyMovingBubbles(std::size_t count, double span, std::uint64_t s
   return set;
 }
 
-// Determinism (brief; STYLE.md): the same input gives the same bits with 1 and 2 threads.
-TEST(Synthesizer, IdenticalBitsForAnyThreadCount) {
+// Determinism (brief; STYLE.md): the same input gives the same bits with 1 and 2 threads, with
+// every oscillator kernel the CPU runs.
+class ThreadCountThroughKernel : public ::testing::TestWithParam<OscillatorKernel> {};
+
+TEST_P(ThreadCountThroughKernel, IdenticalBitsForAnyThreadCount) {
+  if (!cpuRunsOscillatorKernel(GetParam()))
+    GTEST_SKIP() << "this CPU cannot run " << oscillatorKernelName(GetParam());
   const BubbleTrackSet set = manyMovingBubbles(3000, 1.0, 7);
-  const SynthesisSettings s = defaultSettings();
+  SynthesisSettings s = defaultSettings();
+  s.kernel = GetParam();
   std::vector<std::vector<float>> one, two;
   oneapi::tbb::task_arena(1).execute([&] { one = synthesize(set, s).channels; });
   oneapi::tbb::task_arena(2).execute([&] { two = synthesize(set, s).channels; });
@@ -242,6 +269,9 @@ TEST(Synthesizer, IdenticalBitsForAnyThreadCount) {
   }
   EXPECT_GT(peak(one[0]), 0.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Synthesizer, ThreadCountThroughKernel, ::testing::ValuesIn(kOscillatorKernels),
+                         kernelTestName);
 
 // Extreme valid inputs (issue acceptance): radius 10 µm (330 kHz: dropped by the Nyquist guard)
 // and 5 cm (66 Hz, decays over seconds), a bubble held at depth 1.3 R (shift near the clamp), and
