@@ -9,6 +9,7 @@
 #include <openvdb/tools/Interpolation.h>
 
 #include "io/input_error.h"
+#include "io/vdb_file_header.h"
 
 namespace fluidsound::io {
 
@@ -22,6 +23,7 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
+  requireIntactVdbHeader(path);  // OpenVDB trusts the lengths in the file (vdb_file_header.h)
   try {
     openvdb::io::File file(path.string());
     file.open();
