@@ -3,6 +3,7 @@
 #include "io/frame_surface.h"
 
 #include <cmath>
+#include <new>
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
@@ -32,6 +33,11 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
     grid_->grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
   } catch (const openvdb::Exception& e) {
     throw InputError(path.string(), "", "an OpenVDB file", std::string("an unreadable file (") + e.what() + ")");
+  } catch (const std::bad_alloc&) {
+    // OpenVDB allocates a compressed block's declared size before reading it (io::bloscFromStream),
+    // which requireIntactVdbHeader cannot check without parsing the whole tree.
+    throw InputError(path.string(), "", "an OpenVDB file",
+                     "a corrupt grid (a block larger than the memory could hold)");
   }
   if (!grid_->grid) throw InputError(path.string(), "surface", "a FloatGrid named surface", "none");
   grid_->background = std::abs(grid_->grid->background());
