@@ -13,8 +13,8 @@ namespace fluidsound::io {
 ///        offsets in order) and each grid's own metadata block. The grids' trees are not checked.
 /// @param path  the file; named in messages as given
 /// @throws InputError naming the file and the part of the header, e.g.
-///         `0000.vdb: grid 1 name: expected a length within the file (at most 88 bytes left),
-///         found 1447313953`
+///         `0000.vdb: grid 0 name: expected a length within the file (at most 89000 bytes left),
+///         found 4294967280`
 void requireIntactVdbHeader(const std::filesystem::path& path);
 
 }  // namespace fluidsound::io
