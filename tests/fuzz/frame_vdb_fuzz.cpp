@@ -6,7 +6,6 @@
 
 #include "io/frame_surface.h"
 #include "io/input_error.h"
-#include "tests/fuzz/bounded_new.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,4 +1,4 @@
-// io/vdb_file_header.h — the structure of a .vdb file's header checked before OpenVDB reads it:
+// io/vdb_file_check.h — the structure of a .vdb file's header checked before OpenVDB reads it:
 // OpenVDB 10 trusts every length in the file, so a corrupt one makes it allocate (and fill) up to
 // 4 GiB, or std::bad_alloc, before any error (found by tests/fuzz/frame_vdb_fuzz).
 #pragma once
@@ -15,6 +15,6 @@ namespace fluidsound::io {
 /// @throws InputError naming the file and the part of the header, e.g.
 ///         `0000.vdb: grid 0 name: expected a length within the file (at most 89000 bytes left),
 ///         found 4294967280`
-void requireIntactVdbHeader(const std::filesystem::path& path);
+void requireIntactVdbFile(const std::filesystem::path& path);
 
 }  // namespace fluidsound::io

@@ -1,7 +1,7 @@
-// Tests of io/vdb_file_header.h: a corrupt .vdb header is refused with a one-line InputError
+// Tests of io/vdb_file_check.h: a corrupt .vdb header is refused with a one-line InputError
 // naming the file and the part of the header, before OpenVDB allocates what its lengths say
 // (cases found by tests/fuzz/frame_vdb_fuzz; their inputs are in tests/fuzz/corpus/frame_vdb/).
-#include "io/vdb_file_header.h"
+#include "io/vdb_file_check.h"
 
 #include <gtest/gtest.h>
 
@@ -65,15 +65,15 @@ InputError frameError(const test::TempFolder& folder, const std::string& bytes) 
 }
 
 // Claim: a frame fluidsound wrote passes the check (it is what the transfer stage reads).
-TEST(VdbFileHeader, AcceptsAFrameFluidsoundWrote) {
+TEST(VdbFileCheck, AcceptsAFrameFluidsoundWrote) {
   test::TempFolder folder;
-  EXPECT_NO_THROW(requireIntactVdbHeader(writeBytes(folder, frameBytes(folder))));
+  EXPECT_NO_THROW(requireIntactVdbFile(writeBytes(folder, frameBytes(folder))));
 }
 
 // Claim: a grid descriptor whose end offset is 0 (the fuzzer's first VDB find: OpenVDB then read
 // the next descriptor at the file's start and allocated 1.4 GB for a name whose length was the
 // magic number) is refused naming the grid's offsets. Reference: the descriptor's layout.
-TEST(VdbFileHeader, RefusesGridOffsetsOutOfOrder) {
+TEST(VdbFileCheck, RefusesGridOffsetsOutOfOrder) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
   const std::size_t offsets =
@@ -85,7 +85,7 @@ TEST(VdbFileHeader, RefusesGridOffsetsOutOfOrder) {
 }
 
 // Claim: a string length beyond the file is refused naming the string, not allocated.
-TEST(VdbFileHeader, RefusesAStringLongerThanTheFile) {
+TEST(VdbFileCheck, RefusesAStringLongerThanTheFile) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
   put<std::uint32_t>(bytes, kFirstDescriptor, 0xfffffff0u);  // the first grid's name length
@@ -95,7 +95,7 @@ TEST(VdbFileHeader, RefusesAStringLongerThanTheFile) {
 }
 
 // Claim: a count beyond what the file could hold is refused naming it.
-TEST(VdbFileHeader, RefusesAGridCountBeyondTheFile) {
+TEST(VdbFileCheck, RefusesAGridCountBeyondTheFile) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
   put<std::int32_t>(bytes, kFirstDescriptor - 4, 1 << 30);
@@ -103,12 +103,35 @@ TEST(VdbFileHeader, RefusesAGridCountBeyondTheFile) {
 }
 
 // Claim: a file cut inside its header, or one of another kind, is refused naming the part.
-TEST(VdbFileHeader, RefusesATruncatedHeaderAndAnotherKindOfFile) {
+TEST(VdbFileCheck, RefusesATruncatedHeaderAndAnotherKindOfFile) {
   test::TempFolder folder;
   const std::string bytes = frameBytes(folder);
   EXPECT_EQ(frameError(folder, bytes.substr(0, 40)).field(), "UUID");
   EXPECT_EQ(frameError(folder, "not a VDB file at all").field(), "magic number");
   EXPECT_EQ(frameError(folder, "").field(), "magic number");
+}
+
+// Claim: a node whose raw (uncompressed) block is not the node's size is refused naming it:
+// OpenVDB 10 read such a block into the node's buffer before comparing the sizes, writing past it
+// (AddressSanitizer: heap-buffer-overflow in io::bloscFromStream; the fuzzer's input, committed).
+TEST(VdbFileCheck, RefusesARawBlockLargerThanItsNode) {
+  const std::filesystem::path frame = std::filesystem::path(FLUIDSOUND_SOURCE_DIR) /
+                                      "tests/fuzz/corpus/frame_vdb/raw_chunk_larger_than_node.vdb";
+  try {
+    requireIntactVdbFile(frame);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "grid 0 root child 0 values size");
+    EXPECT_EQ(error.found(), "-5208204135685572680");
+  }
+}
+
+// Claim: a compressed block larger than what is left of the file is refused before OpenVDB
+// allocates it (the fuzzer's 86 GB block). Reference: the file's size.
+TEST(VdbFileCheck, RefusesACompressedBlockBeyondTheFile) {
+  const std::filesystem::path frame = std::filesystem::path(FLUIDSOUND_SOURCE_DIR) /
+                                      "tests/fuzz/corpus/frame_vdb/blosc_block_size_86gb.vdb";
+  EXPECT_THROW(requireIntactVdbFile(frame), InputError);
 }
 
 }  // namespace
