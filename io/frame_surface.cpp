@@ -3,12 +3,14 @@
 #include "io/frame_surface.h"
 
 #include <cmath>
+#include <new>
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
 
 #include "io/input_error.h"
+#include "io/vdb_file_check.h"
 
 namespace fluidsound::io {
 
@@ -22,14 +24,20 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
+  requireIntactVdbFile(path);  // OpenVDB trusts the lengths in the file (vdb_file_check.h)
   try {
     openvdb::io::File file(path.string());
-    file.open();
+    file.open(/*delayLoad=*/false);  // read in full now, in the order requireIntactVdbFile checked
     openvdb::GridBase::Ptr base = file.hasGrid("surface") ? file.readGrid("surface") : nullptr;
     file.close();
     grid_->grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
   } catch (const openvdb::Exception& e) {
     throw InputError(path.string(), "", "an OpenVDB file", std::string("an unreadable file (") + e.what() + ")");
+  } catch (const std::bad_alloc&) {
+    // OpenVDB allocates a compressed block's declared size before reading it (io::bloscFromStream);
+    // requireIntactVdbFile bounds each by the file, so this is only a second line of defence.
+    throw InputError(path.string(), "", "an OpenVDB file",
+                     "a corrupt grid (a block larger than the memory could hold)");
   }
   if (!grid_->grid) throw InputError(path.string(), "surface", "a FloatGrid named surface", "none");
   grid_->background = std::abs(grid_->grid->background());

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "io/frame_files.h"
 #include "io/input_error.h"
@@ -62,6 +63,21 @@ TEST(FrameSurface, BeyondTheBandFallsBackToTheHorizontalPlane) {
 TEST(FrameSurface, MissingFrameNamesTheFile) {
   test::TempFolder folder;
   EXPECT_THROW(FrameSurface(folder.path() / "0007.vdb"), InputError);
+}
+
+// Bad input: a frame whose compressed block declares 86 GB (found by tests/fuzz/frame_vdb_fuzz;
+// OpenVDB allocates the declared size before reading it) is a one-line InputError naming the
+// file, not std::bad_alloc (exit 5 from transfer).
+TEST(FrameSurface, CorruptBlockSizeIsAnInputError) {
+  const std::filesystem::path frame =
+      std::filesystem::path(FLUIDSOUND_SOURCE_DIR) / "tests/fuzz/corpus/frame_vdb/blosc_block_size_86gb.vdb";
+  try {
+    const FrameSurface surface(frame);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), frame.string());
+    EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

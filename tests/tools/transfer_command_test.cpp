@@ -2,10 +2,12 @@
 // are evaluated in parallel, and the file it writes does not depend on the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -57,6 +59,42 @@ TEST(TransferCommand, OutputDoesNotDependOnTheThreadCount) {
       EXPECT_TRUE(text == reference) << threads << " threads wrote another bubbles.json";
     }
   }
+}
+
+// Bad input: frames whose surface grid has a raw block longer than its node (found by
+// tests/fuzz/frame_vdb_fuzz; OpenVDB wrote past the node's buffer: a segmentation fault, exit 139)
+// end the transfer with exit 3 and one line naming the frame and the node, and leave the folder as
+// it was (bubbles.json unchanged, no report).
+TEST(TransferCommand, CorruptFrameIsAOneLineInputError) {
+  const TempFolder folder;
+  const fs::path scene = folder.path() / "fall.scene.json", out = folder.path() / "out";
+  { std::ofstream(scene) << kScene; }
+  const CommandOutcome simulate =
+      runFluidsound({"simulate", scene.string(), "-o", out.string(), "--quiet"});
+  ASSERT_EQ(simulate.exitCode, 0) << simulate.err;
+  const fs::path corrupt = fs::path(FLUIDSOUND_SOURCE_DIR) /
+                           "tests/fuzz/corpus/frame_vdb/raw_chunk_larger_than_node.vdb";
+  for (const auto& frame : fs::directory_iterator(out / "frames"))
+    if (frame.path().extension() == ".vdb")
+      fs::copy_file(corrupt, frame.path(), fs::copy_options::overwrite_existing);
+  const std::string tracks = fileText(out / "bubbles.json");
+  std::vector<fs::path> before;
+  for (const auto& entry : fs::recursive_directory_iterator(out)) before.push_back(entry.path());
+
+  const CommandOutcome transfer =
+      runFluidsound({"transfer", scene.string(), "-o", out.string(), "--quiet"});
+  EXPECT_EQ(transfer.exitCode, 3) << transfer.err;
+  EXPECT_NE(transfer.err.find("frames/0"), std::string::npos) << transfer.err;
+  EXPECT_NE(transfer.err.find("root child 0 values size: expected a compressed size > 0"),
+            std::string::npos)
+      << transfer.err;
+  EXPECT_EQ(transfer.err.find('\n'), transfer.err.size() - 1) << transfer.err;
+  EXPECT_EQ(fileText(out / "bubbles.json"), tracks);
+  std::vector<fs::path> after;
+  for (const auto& entry : fs::recursive_directory_iterator(out)) after.push_back(entry.path());
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  EXPECT_EQ(after, before);
 }
 
 }  // namespace

@@ -1,0 +1,289 @@
+// io/vdb_file_check.cpp — see vdb_file_check.h. The layout is OpenVDB's (io/Archive.cc,
+// io/File.cc, io/GridDescriptor.cc, Metadata.cc of OpenVDB 10), all little-endian:
+//   header:     int64 magic 0x56444220, uint32 file version, uint32 × 2 library version,
+//               char has-grid-offsets, char[36] UUID
+//   metadata:   int32 count, then per entry string name, string type, uint32 size, bytes
+//   descriptors: int32 count, then per grid string name, string type, string instance parent,
+//               int64 grid, block and end offsets (the next descriptor starts at the end offset)
+//   grid:       at its grid offset, uint32 compression flags, then metadata as above
+//   string:     uint32 length, then the bytes
+// and, for the grid FrameSurface reads (`surface`, a FloatTree 5-4-3), after its metadata
+// (io/Archive.cc, math/Transform.cc, tree/RootNode.h, InternalNode.h, LeafNode.h,
+// io/Compression.h):
+//   transform:  string map type, then the map's fixed-size values
+//   topology:   int32 buffer count, float background, uint32 tile and child counts, tiles
+//               (int32 × 3 origin, float, bool), children (int32 × 3 origin, internal node 5)
+//   internal N: child mask, value mask (2^(3N) bits each), compressed values, then each child
+//   leaf:       value mask (512 bits); its values come after the topology, at the block offset,
+//               leaf by leaf (root children in origin order): value mask again, compressed values
+//   compressed values: int8 kind, 0–2 floats, maybe a selection mask, then the data: with blosc
+//               or zip an int64 size (≤ 0: that many raw bytes, negated), else raw floats
+#include "io/vdb_file_check.h"
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "io/input_error.h"
+
+namespace fluidsound::io {
+namespace {
+
+constexpr std::int64_t kMagic = 0x56444220;    // " BDV"
+constexpr std::uint32_t kOldestVersion = 222;  // OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION
+constexpr std::uint32_t kNewestVersion = 224;  // OPENVDB_FILE_VERSION_MULTIPASS_IO (OpenVDB 10)
+constexpr std::size_t kUuidBytes = 36;
+
+/// Reads the header's fields in order, each checked against the bytes left before `end`.
+class HeaderReader {
+ public:
+  explicit HeaderReader(const std::filesystem::path& path)
+      : name_(path.string()), in_(path, std::ios::binary) {
+    if (!in_) throw InputError(name_, "", "a readable OpenVDB file", "cannot open it");
+    in_.seekg(0, std::ios::end);
+    size_ = static_cast<std::int64_t>(in_.tellg());
+    end_ = size_;
+    in_.seekg(0);
+  }
+
+  std::int64_t size() const { return size_; }
+  std::int64_t position() { return static_cast<std::int64_t>(in_.tellg()); }
+  void limitTo(std::int64_t end) { end_ = end; }
+  void seek(std::int64_t offset) { in_.seekg(offset); }
+
+  template <typename T>
+  T number(const std::string& field) {
+    requireBytes(field, sizeof(T));
+    T value{};
+    in_.read(reinterpret_cast<char*>(&value), sizeof(T));  // little-endian, as x86-64 and OpenVDB
+    return value;
+  }
+
+  /// A length or count that must fit in the bytes left (at least `bytesEach` bytes per item).
+  std::int64_t count(const std::string& field, std::int64_t bytesEach) {
+    const std::int64_t value = number<std::int32_t>(field);
+    const std::int64_t left = end_ - position();
+    if (value < 0 || value * bytesEach > left)
+      fail(field, "a count within the file (at most " + std::to_string(left / bytesEach) + " left)",
+           std::to_string(value));
+    return value;
+  }
+
+  /// `bytes` raw bytes into `out`.
+  void bytes(const std::string& field, char* out, std::int64_t bytes) {
+    requireBytes(field, bytes);
+    in_.read(out, bytes);
+  }
+
+  void skip(const std::string& field, std::int64_t bytes) {
+    requireBytes(field, bytes);
+    in_.seekg(bytes, std::ios::cur);
+  }
+
+  /// A string: its uint32 length within the bytes left, then the text (kept only up to 64 bytes:
+  /// the names the check compares).
+  std::string string(const std::string& field) {
+    const std::int64_t length = number<std::uint32_t>(field);
+    const std::int64_t left = end_ - position();
+    if (length > left)
+      fail(field, "a length within the file (at most " + std::to_string(left) + " bytes left)",
+           std::to_string(length));
+    if (length > 64) {
+      in_.seekg(length, std::ios::cur);
+      return {};
+    }
+    std::string text(static_cast<std::size_t>(length), '\0');
+    in_.read(text.data(), length);
+    return text;
+  }
+
+  [[noreturn]] void fail(const std::string& field, const std::string& expected,
+                         const std::string& found) const {
+    throw InputError(name_, field, expected, found);
+  }
+
+ private:
+  void requireBytes(const std::string& field, std::int64_t bytes) {
+    const std::int64_t left = end_ - position();
+    if (!in_ || left < bytes)
+      fail(field, std::to_string(bytes) + " more bytes",
+           "the end of its part of the file at byte " + std::to_string(end_));
+  }
+
+  std::string name_;
+  std::ifstream in_;
+  std::int64_t size_ = 0;
+  std::int64_t end_ = 0;
+};
+
+/// A metadata block: int32 count, then name, type and sized value per entry.
+void checkMetadata(HeaderReader& in, const std::string& field) {
+  // Each entry holds at least two string lengths and a value size.
+  const std::int64_t entries = in.count(field + " count", 12);
+  for (std::int64_t i = 0; i < entries; ++i) {
+    const std::string entry = field + "[" + std::to_string(i) + "]";
+    in.string(entry + " name");
+    in.string(entry + " type");
+    in.string(entry + " value");  // uint32 size, then the bytes: the same shape as a string
+  }
+}
+
+constexpr std::uint32_t kZip = 1, kActiveMask = 2, kBlosc = 4;  // io::COMPRESS_*
+constexpr std::int8_t kAllValues = 6;                           // io::NO_MASK_AND_ALL_VALS
+
+/// A node mask of `bits` bits, read from the file.
+using NodeMask = std::vector<std::uint64_t>;
+
+NodeMask readMask(HeaderReader& in, const std::string& field, std::int64_t bits) {
+  NodeMask mask(static_cast<std::size_t>(bits / 64));
+  in.bytes(field, reinterpret_cast<char*>(mask.data()), bits / 8);
+  return mask;
+}
+
+std::int64_t countOn(const NodeMask& mask) {
+  std::int64_t count = 0;
+  for (const std::uint64_t word : mask) count += std::popcount(word);
+  return count;
+}
+
+/// io::readCompressedValues for floats: `values` per node, `mask` the node's value mask.
+void checkValues(HeaderReader& in, const std::string& field, std::uint32_t compression,
+                 std::int64_t values, const NodeMask& mask) {
+  const auto kind = in.number<std::int8_t>(field + " kind");
+  if (kind == 2 || kind == 4 || kind == 5) in.skip(field + " inactive value", kind == 5 ? 8 : 4);
+  if (kind == 3 || kind == 4 || kind == 5) in.skip(field + " selection mask", values / 8);
+  const std::int64_t count =
+      (compression & kActiveMask) && kind != kAllValues ? countOn(mask) : values;
+  const std::int64_t bytes = count * 4;
+  if (!(compression & (kZip | kBlosc))) return in.skip(field + " data", bytes);
+  const auto size = in.number<std::int64_t>(field + " size");
+  if (size <= 0 && size != -bytes)
+    in.fail(field + " size",
+            "a compressed size > 0 or minus the raw size (" + std::to_string(bytes) + " bytes)",
+            std::to_string(size));
+  in.skip(field + " data", size <= 0 ? bytes : size);
+}
+
+/// An internal node of log2 size `log2Dim` (5 or 4) and everything below it; the leaves' value
+/// masks are appended to `leaves` in the order their values follow the topology.
+void checkInternalNode(HeaderReader& in, const std::string& field, std::uint32_t compression,
+                       int log2Dim, std::vector<NodeMask>& leaves) {
+  const std::int64_t values = std::int64_t{1} << (3 * log2Dim);
+  const NodeMask children = readMask(in, field + " child mask", values);
+  const NodeMask active = readMask(in, field + " value mask", values);
+  checkValues(in, field + " values", compression, values, active);
+  for (std::size_t word = 0; word < children.size(); ++word)
+    for (std::uint64_t bits = children[word]; bits != 0; bits &= bits - 1) {
+      if (log2Dim == 4) {
+        leaves.push_back(readMask(in, field + " leaf mask", 512));
+      } else {
+        checkInternalNode(in, field, compression, log2Dim - 1, leaves);
+      }
+    }
+}
+
+/// The bytes of map types a transform may hold (math/Maps.h: each one's read()).
+std::int64_t mapBytes(const std::string& type) {
+  if (type == "UniformScaleTranslateMap" || type == "ScaleTranslateMap") return 6 * 24;
+  if (type == "UniformScaleMap" || type == "ScaleMap") return 5 * 24;
+  if (type == "TranslationMap") return 24;
+  if (type == "AffineMap" || type == "UnitaryMap") return 128;
+  return -1;
+}
+
+/// The transform, topology and leaf values of the `surface` grid, after its metadata.
+void checkSurfaceTree(HeaderReader& in, const std::string& grid, std::uint32_t compression,
+                      std::int64_t blockOffset, std::int64_t endOffset) {
+  const std::string map = in.string(grid + " transform");
+  const std::int64_t bytes = mapBytes(map);
+  if (bytes < 0)
+    in.fail(grid + " transform", "a scale, translation or affine map", "'" + map + "'");
+  in.skip(grid + " transform", bytes);
+  in.skip(grid + " buffer count", 4);
+  in.skip(grid + " background", 4);
+  const auto tiles = in.number<std::uint32_t>(grid + " tile count");
+  const auto children = in.number<std::uint32_t>(grid + " child count");
+  if (tiles > 0) in.skip(grid + " tiles", std::int64_t{tiles} * 17);
+  // Root children are kept by origin (a later one replaces an earlier one at the same origin),
+  // and their leaves' values follow in origin order.
+  std::map<std::tuple<std::int32_t, std::int32_t, std::int32_t>, std::vector<NodeMask>> roots;
+  for (std::uint32_t i = 0; i < children; ++i) {
+    const std::string child = grid + " root child " + std::to_string(i);
+    std::array<std::int32_t, 3> origin{};
+    in.bytes(child + " origin", reinterpret_cast<char*>(origin.data()), 12);
+    std::vector<NodeMask> leaves;
+    checkInternalNode(in, child, compression, 5, leaves);
+    roots[{origin[0], origin[1], origin[2]}] = std::move(leaves);
+  }
+  in.seek(blockOffset);
+  in.limitTo(endOffset);
+  std::int64_t index = 0;
+  for (const auto& [origin, leaves] : roots)
+    for (const NodeMask& mask : leaves) {
+      const std::string leaf = grid + " leaf " + std::to_string(index++);
+      if (readMask(in, leaf + " value mask", 512) != mask)
+        in.fail(leaf + " value mask", "the mask of the topology", "another");
+      checkValues(in, leaf + " values", compression, 512, mask);
+    }
+}
+
+/// One grid descriptor and the metadata block at its grid offset (for `surface`, its whole
+/// tree); leaves `in` at the next descriptor.
+void checkGrid(HeaderReader& in, std::int64_t index) {
+  const std::string grid = "grid " + std::to_string(index);
+  const std::string name = in.string(grid + " name");
+  const std::string type = in.string(grid + " type");
+  const std::string parent = in.string(grid + " instance parent");
+  // io::File::readGrid("surface") reads the grid of that name (a unique name adds "\x03" and
+  // an index to it).
+  const bool surface = name.substr(0, name.find('\x03')) == "surface";
+  if (surface && (type != "Tree_float_5_4_3" || !parent.empty()))
+    in.fail(grid + " type", "a FloatGrid (Tree_float_5_4_3, not an instance)", "'" + type + "'");
+  const std::int64_t descriptorEnd = in.position() + 24;
+  const auto gridOffset = in.number<std::int64_t>(grid + " grid offset");
+  const auto blockOffset = in.number<std::int64_t>(grid + " block offset");
+  const auto endOffset = in.number<std::int64_t>(grid + " end offset");
+  if (!(descriptorEnd <= gridOffset && gridOffset <= blockOffset && blockOffset <= endOffset &&
+        endOffset <= in.size()))
+    in.fail(grid + " offsets",
+            "offsets in order within the file (" + std::to_string(descriptorEnd) +
+                " <= grid <= block <= end <= " + std::to_string(in.size()) + ")",
+            "grid " + std::to_string(gridOffset) + ", block " + std::to_string(blockOffset) +
+                ", end " + std::to_string(endOffset));
+  in.seek(gridOffset);
+  in.limitTo(blockOffset);
+  const auto compression = in.number<std::uint32_t>(grid + " compression");
+  checkMetadata(in, grid + " metadata");
+  if (surface) checkSurfaceTree(in, grid, compression, blockOffset, endOffset);
+  in.limitTo(in.size());
+  in.seek(endOffset);
+}
+
+}  // namespace
+
+void requireIntactVdbFile(const std::filesystem::path& path) {
+  HeaderReader in(path);
+  if (in.number<std::int64_t>("magic number") != kMagic)
+    in.fail("magic number", "an OpenVDB file", "another kind of file");
+  const auto version = in.number<std::uint32_t>("file version");
+  if (version < kOldestVersion || version > kNewestVersion)
+    in.fail("file version",
+            "an OpenVDB file format " + std::to_string(kOldestVersion) + " to " +
+                std::to_string(kNewestVersion),
+            std::to_string(version));
+  in.skip("library version", 8);
+  if (in.number<char>("grid offsets") != 1)
+    in.fail("grid offsets", "a file with grid offsets (as openvdb::io::File writes)", "none");
+  in.skip("UUID", kUuidBytes);
+  checkMetadata(in, "metadata");
+  const std::int64_t grids = in.count("grid count", 36);  // 3 string lengths, 3 offsets
+  for (std::int64_t i = 0; i < grids; ++i) checkGrid(in, i);
+}
+
+}  // namespace fluidsound::io
