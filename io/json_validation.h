@@ -72,6 +72,11 @@ struct KeyRules {
 
 // ---- parsing -------------------------------------------------------------------------------
 
+/// Deepest nesting of arrays and objects an input file may have (scenes and bubble-track files
+/// need fewer than 8 levels); beyond this limit the document is refused as it is read, before the
+/// parse work and memory that grow with the depth.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
 /// Whether a key given twice in one JSON object is an error or the last one silently wins.
 enum class DuplicateKeys { LastWins, Rejected };
 
@@ -80,7 +85,8 @@ enum class DuplicateKeys { LastWins, Rejected };
 /// @param duplicates  with DuplicateKeys::Rejected a key given twice in one object is an error
 ///                    naming its JSON path (nlohmann would otherwise keep the last silently)
 /// @throws InputError "expected valid JSON" with nlohmann's message (a number such as 1e999
-///         included), or "expected each key at most once in an object"
+///         included), "expected each key at most once in an object", or "expected at most 64
+///         nested arrays and objects" naming the path of the first level too deep
 nlohmann::json parseJson(std::string_view text, const std::string& file, DuplicateKeys duplicates);
 
 /// @brief The whole content of an input file.

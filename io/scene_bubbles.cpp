@@ -4,14 +4,20 @@
 #include <limits>
 #include <string>
 
+#include "io/bubble_track_limits.h"
 #include "io/input_error.h"
 
 namespace fluidsound::io {
 namespace {
 using json = nlohmann::json;
 
-/// min_radius < max_radius, named at the max.
+/// min_radius < max_radius, named at the max; both within the radii a bubble-track file may hold
+/// (io/bubble_track_limits.h), so that what `simulate` writes, `synth` reads.
 void requireRadiusOrder(const JsonValidator& check, const std::string& path, double min, double max) {
+  const std::string range = "a radius from 1e-06 to 1 (metres, the range of a bubble-track file)";
+  static_assert(kMinBubbleRadius == 1e-6 && kMaxBubbleRadius == 1.0, "the text above names the bounds");
+  if (!isBubbleRadius(min)) check.fail(memberPath(path, "min_radius"), range, formatNumber(min));
+  if (!isBubbleRadius(max)) check.fail(memberPath(path, "max_radius"), range, formatNumber(max));
   if (!(max > min))
     check.fail(memberPath(path, "max_radius"), "a radius > min_radius = " + std::to_string(min) + " (metres)",
                std::to_string(max));
