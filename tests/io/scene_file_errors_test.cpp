@@ -285,7 +285,7 @@ TEST(SceneFile, EmitterWithoutSpeedIsNamed) {
   json document = fullScene();
   document["emitters"][0].erase("speed");
   expectError(parseError(document.dump()), "emitters[0].speed",
-              "a number > 0 (m/s), found nothing (required)");
+              "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water), found nothing (required)");
 }
 
 TEST(SceneFile, UnsortedPathKeysNameTheKeyOutOfOrder) {
