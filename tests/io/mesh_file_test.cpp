@@ -319,7 +319,7 @@ TEST(MeshFile, IndexBeyond32BitsIsRejectedNotWrapped) {
   const test::TempFolder folder;
   const fs::path obj = write(folder, "wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967299\n");
   test::expectInputError(readError(obj), obj.string(), "line 4",
-                         "a face corner \"v\", \"v/vt\", \"v//vn\" or \"v/vt/vn\" of non-zero integer indices "
+                         "a face corner \"v\", \"v/vt\", \"v//vn\" or \"v/vt/vn\" of integer indices "
                          "within +-2147483647, found \"4294967299\" in \"f 1 2 4294967299\"",
                          ExpectedAt::RightAfterHead);
   const fs::path texture = write(folder, "vt.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/99999999999 2 3\n");
