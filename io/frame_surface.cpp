@@ -9,6 +9,7 @@
 #include <openvdb/tools/Interpolation.h>
 
 #include "io/input_error.h"
+#include "io/vdb_header_check.h"
 
 namespace fluidsound::io {
 
@@ -22,6 +23,7 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
+  requireIntactVdbHeader(path);  // OpenVDB trusts the lengths in a damaged header
   try {
     openvdb::io::File file(path.string());
     file.open();
@@ -30,6 +32,8 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
     grid_->grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
   } catch (const openvdb::Exception& e) {
     throw InputError(path.string(), "", "an OpenVDB file", std::string("an unreadable file (") + e.what() + ")");
+  } catch (const std::exception& e) {  // a damaged tree: a length read as a huge allocation, a short read
+    throw InputError(path.string(), "", "an intact OpenVDB file", std::string("a damaged file (") + e.what() + ")");
   }
   if (!grid_->grid) throw InputError(path.string(), "surface", "a FloatGrid named surface", "none");
   grid_->background = std::abs(grid_->grid->background());

@@ -19,11 +19,13 @@ namespace fluidsound::tools {
 /// @param durationOption  `--duration` [s], if given
 /// @param availableBytes  physical memory [B]; 0 (unknown) checks the fixed limit only
 void requireMemoryForRender(const acoustics::BubbleTrackSet& tracks, const std::string& inputFile,
-                            const acoustics::SynthesisSettings& settings, const std::optional<double>& durationOption,
+                            const acoustics::SynthesisSettings& settings,
+                            const std::optional<double>& durationOption,
                             std::uint64_t availableBytes);
 
 /// @brief `run`: throws io::InputError naming `sceneFile` and `time.duration` when the scene's
 ///        audio (duration × audio.sample_rate × listeners) would not fit in `availableBytes`.
-void requireMemoryForRender(const sim::Scene& scene, const std::string& sceneFile, std::uint64_t availableBytes);
+void requireMemoryForRender(const sim::Scene& scene, const std::string& sceneFile,
+                            std::uint64_t availableBytes);
 
 }  // namespace fluidsound::tools

@@ -45,9 +45,12 @@ TEST(FluidSolverSubsteps, TinyCflStopsAtTheLimitNamingCfl) {
   scene.time.cfl = 1e-12;
   const auto start = std::chrono::steady_clock::now();
   const SubstepLimitError error = limitErrorOf(scene, 20);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string message = error.what();
-  EXPECT_NE(message.find("more than 20 substeps for the frame ending at 0.0333333 s"), std::string::npos) << message;
+  EXPECT_NE(message.find("more than 20 substeps for the frame ending at 0.0333333 s"),
+            std::string::npos)
+      << message;
   EXPECT_NE(message.find("cfl 1e-12"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   EXPECT_EQ(error.likelyFields(), "time.cfl") << message;
@@ -60,7 +63,8 @@ TEST(FluidSolverSubsteps, FastEmitterIsNamed) {
   scene.emitters.push_back({{0.04, 0.07, 0.04}, {0, -1, 0}, 0.01, 1e6, 0.0, 1.0});
   const SubstepLimitError error = limitErrorOf(scene, 5);
   EXPECT_EQ(error.likelyFields(), "emitters[].speed, time.cfl") << error.what();
-  EXPECT_NE(std::string(error.what()).find("emitters 1e+06 m/s"), std::string::npos) << error.what();
+  EXPECT_NE(std::string(error.what()).find("emitters 1e+06 m/s"), std::string::npos)
+      << error.what();
 }
 
 // Claim: gravity of 10³⁰ m/s² makes gravity the likely field (its margin √(5 h |g|) ≈ 2·10¹⁴ m/s).
