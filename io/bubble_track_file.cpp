@@ -278,6 +278,7 @@ acoustics::BubbleTrackSet readBubbleTracks(const std::filesystem::path& path) {
 
 acoustics::BubbleTrackSet readBubbleTracks(const std::filesystem::path& path,
                                            TransferValues transfer) {
+  if (path == kStandardInput) return parseBubbleTracks(readStandardInput("standard input"), "standard input", transfer);
   return parseBubbleTracks(readInputFile(path), path.string(), transfer);
 }
 

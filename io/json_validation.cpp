@@ -222,13 +222,43 @@ json parseJson(std::string_view text, const std::string& file, DuplicateKeys dup
   }
 }
 
+std::string nonRegularInput(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  switch (fs::status(path, ec).type()) {
+    case fs::file_type::regular:
+      return "";
+    case fs::file_type::directory:
+      return "a folder";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::not_found:
+      return "no such file";
+    default:
+      return ec ? ec.message() : "not a regular file";
+  }
+}
+
+std::string readStandardInput(const std::string& name) {
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t count = 0;
+  while ((count = std::fread(buffer, 1, sizeof buffer, stdin)) > 0) text.append(buffer, count);
+  if (std::ferror(stdin) != 0)
+    throw InputError(name, "", "readable standard input", std::generic_category().message(errno));
+  return text;
+}
+
 std::string readInputFile(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    throw InputError(name, "", "a readable file", "no such file");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(name, "", "a readable file", "a folder");
+  const std::string kind = nonRegularInput(path);
+  if (!kind.empty()) throw InputError(name, "", "a readable file", kind);
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr)
     throw InputError(name, "", "a readable file", std::generic_category().message(errno));

@@ -89,10 +89,20 @@ enum class DuplicateKeys { LastWins, Rejected };
 ///         nested arrays and objects" naming the path of the first level too deep
 nlohmann::json parseJson(std::string_view text, const std::string& file, DuplicateKeys duplicates);
 
-/// @brief The whole content of an input file.
-/// @throws InputError "expected a readable file" if `path` does not exist, is a folder or cannot
-///         be read
+/// @brief What stands at `path` when it is not a regular file an input can be read from: "no such
+///        file", "a folder", "a FIFO", "a character device", "a block device", "a socket"; empty
+///        for a regular file (symbolic links are followed). Inputs are read from regular files
+///        only: a FIFO or a device would block or never end (docs/cli.md, "Inputs").
+std::string nonRegularInput(const std::filesystem::path& path);
+
+/// @brief The whole content of an input file, which must be a regular file.
+/// @throws InputError "expected a readable file" if `path` does not exist, is not a regular file
+///         (a folder, FIFO, device, socket) or cannot be read
 std::string readInputFile(const std::filesystem::path& path);
+
+/// @brief Everything on standard input (`-` as an input file, as in sox and ffmpeg).
+/// @throws InputError naming `name` if it cannot be read
+std::string readStandardInput(const std::string& name);
 
 // ---- the validator -------------------------------------------------------------------------
 
