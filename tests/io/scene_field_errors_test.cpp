@@ -78,6 +78,15 @@ const std::vector<FieldCase> kFieldCases = {
      R"(one of "-x", "+x", "-y", "+y", "-z", "+z")", R"("-X")"},
 
     // ---- gravity --------------------------------------------------------------------------------
+    // ---- bubbles: lengths in cells and the rate, bounded (1e308 crashed and hung the model) ------
+    {"bubbles_band_cells_huge", "/bubbles", R"({"band_cells": 1e308})", "bubbles.band_cells",
+     "a number > 0 and <= 64 (cells)", "1e+308"},
+    {"bubbles_entrainment_depth_cells_huge", "/bubbles", R"({"entrainment_depth_cells": 1e308})",
+     "bubbles.entrainment_depth_cells", "a number > 0 and <= 64 (cells)", "1e+308"},
+    {"bubbles_jitter_cells_huge", "/bubbles", R"({"jitter_cells": 65})", "bubbles.jitter_cells",
+     "a number >= 0 and <= 64 (cells)", "65"},
+    {"bubbles_rate_huge", "/bubbles", R"({"rate": 1e308})", "bubbles.rate",
+     "a number >= 0 and <= 10000 (creation attempts per second per unit potential)", "1e+308"},
     {"gravity_huge", "/gravity", "[0, -1e30, 0]", "gravity", "an acceleration of at most 1000 m/s^2 (about 100 g)",
      "|g| = 1e+30 m/s^2"},
     {"gravity_string", "/gravity", R"("down")", "gravity", vector3("m/s^2"), R"("down")"},
