@@ -22,6 +22,7 @@
 #include "io/atomic_file.h"
 #include "io/channel_layout.h"
 #include "io/input_error.h"
+#include "io/json_validation.h"
 
 namespace fluidsound::io {
 namespace {
@@ -296,10 +297,13 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
 }
 
 AudioBuffer readAudio(const fs::path& path) {
-  const std::string name = path.string();
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(name, "", "a readable file", "no such file");
-  if (fs::is_directory(path, ec)) throw InputError(name, "", "a readable file", "a folder");
+  // `-` is standard input, which libsndfile itself opens for the name "-" (as sox does).
+  const bool standardInput = path == "-";
+  const std::string name = standardInput ? "standard input" : path.string();
+  if (!standardInput) {
+    if (const std::string kind = nonRegularInput(path); !kind.empty())
+      throw InputError(name, "", "a readable file", kind);
+  }
   SF_INFO info{};
   SoundFile file(sf_open(path.c_str(), SFM_READ, &info));
   if (file.get() == nullptr) {

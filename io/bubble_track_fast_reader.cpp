@@ -1,6 +1,8 @@
 // io/bubble_track_fast_reader.cpp — see bubble_track_fast_reader.h.
 #include "io/bubble_track_fast_reader.h"
 
+#include "io/bubble_track_limits.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -141,10 +143,10 @@ class PlainReader {
           format = in.string(tag) && tag == kFormatTag;
           return format;
         }
-        case 1: return in.number(set.sampleRate) && set.sampleRate > 0.0;
+        case 1: return in.number(set.sampleRate) && isTrackSampleRate(set.sampleRate);
         case 2: {
           double duration = 0.0;
-          if (!in.number(duration) || !(duration > 0.0)) return false;
+          if (!in.number(duration) || !isTrackDuration(duration)) return false;
           set.duration = duration;
           return true;
         }
@@ -178,11 +180,11 @@ class PlainReader {
     if (!in.take('{')) return false;
     const bool ok = members(in, keys, [&](std::size_t key) {
       switch (key) {
-        case 0: return radius = in.number(b.radius) && b.radius > 0.0;
-        case 1: return birth = in.number(b.birth) && b.birth >= 0.0;
+        case 0: return radius = in.number(b.radius) && isBubbleRadius(b.radius);
+        case 1: return birth = in.number(b.birth) && isTrackTime(b.birth);
         case 2: {
           double amplitude = 0.0;
-          if (!in.number(amplitude) || !(amplitude > 0.0)) return false;
+          if (!in.number(amplitude) || !isBubbleAmplitude(amplitude)) return false;
           b.amplitude = amplitude;
           return true;
         }
@@ -192,7 +194,7 @@ class PlainReader {
     if (!ok || !radius || !birth) return false;
     // Depth against the radius and the time order, once the radius is known.
     for (std::size_t j = 0; j < b.track.size(); ++j) {
-      if (!(b.track[j].depth > b.radius)) return false;
+      if (!isBubbleDepth(b.track[j].depth, b.radius)) return false;
       if (j > 0 && !(b.track[j].time > b.track[j - 1].time)) return false;
     }
     set.bubbles.push_back(std::move(b));
@@ -206,21 +208,22 @@ class PlainReader {
     if (!in.take('{')) return false;
     const bool ok = members(in, keys, [&](std::size_t key) {
       switch (key) {
-        case 0: return time = in.number(s.time) && s.time >= 0.0;
+        case 0: return time = in.number(s.time) && isTrackTime(s.time);
         case 1: return depth = in.number(s.depth);
         case 2:
           transfer = true;
           // An empty list is valid JSON but not a valid transfer; the caller rejects it by count.
           return elements(in, [&] {
             double v = 0.0;
-            if (!in.number(v)) return false;
+            if (!in.number(v) || !isTransfer(v)) return false;
             s.transfer.push_back(v);
             return true;
           }) && !s.transfer.empty();
         default: {
           std::array<double, 3> p{};
           std::size_t count = 0;
-          const bool read = elements(in, [&] { return count < 3 && in.number(p[count++]); });
+          const bool read =
+              elements(in, [&] { return count < 3 && in.number(p[count]) && isTrackCoordinate(p[count++]); });
           if (!read || count != 3) return false;
           s.position = p;
           return true;

@@ -17,6 +17,7 @@
 
 #include "io/atomic_file.h"
 #include "io/bubble_track_fast_reader.h"
+#include "io/bubble_track_limits.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
 
@@ -35,6 +36,18 @@ constexpr std::string_view kFormatTag = "fluidsound.bubbles/1";
 constexpr KeyRules kBubbleKeyRules{
     .allowExtensionKeys = true, .matchSharedStart = false, .unknownKeyFound = ""};
 
+/// A bound as a reader writes it: 1e-06, 1, 11000.
+std::string boundText(double bound) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", bound);
+  return text;
+}
+
+/// "a number from LOW to HIGH (UNIT)", the expected text of a bounded field.
+std::string rangeText(double low, double high, const std::string& unit) {
+  return "a number from " + boundText(low) + " to " + boundText(high) + " (" + unit + ")";
+}
+
 // ---- the validating reader ----------------------------------------------------------------------
 
 /// Turns a parsed JSON document into a BubbleTrackSet, or throws InputError at the first problem.
@@ -49,10 +62,16 @@ class TrackSetReader {
                              {"format", "sample_rate", "duration", "listeners", "bubbles"});
 
     BubbleTrackSet set;
-    if (const json* rate = findMember(root, "sample_rate"))
-      set.sampleRate = check_.number(*rate, "sample_rate", "a number > 0 (Hz)", positive);
-    if (const json* duration = findMember(root, "duration"))
-      set.duration = check_.number(*duration, "duration", "a number > 0 (seconds)", positive);
+    if (const json* rate = findMember(root, "sample_rate")) {
+      set.sampleRate = static_cast<double>(check_.wholeNumber(
+          *rate, "sample_rate",
+          "an integer from " + std::to_string(kMinTrackSampleRate) + " to " + std::to_string(kMaxTrackSampleRate) + " (Hz)",
+          kMinTrackSampleRate, kMaxTrackSampleRate));
+    }
+    if (const json* duration = findMember(root, "duration")) {
+      set.duration = check_.number(*duration, "duration",
+                                   "a number > 0 and <= " + boundText(kMaxTrackTime) + " (seconds)", isTrackDuration);
+    }
     if (const json* listeners =
             check_.optionalArray(root, "", "listeners", "an array of listener names (strings)")) {
       for (std::size_t i = 0; i < listeners->size(); ++i) {
@@ -83,13 +102,14 @@ class TrackSetReader {
     check_.requireObject(object, path, "an object with radius and birth");
     check_.rejectUnknownKeys(object, path, {"radius", "birth", "amplitude", "track"});
     BubbleTrack bubble;
-    bubble.radius =
-        check_.requiredNumber(object, path, "radius", "a number > 0 (metres)", positive);
+    bubble.radius = check_.requiredNumber(object, path, "radius",
+                                          rangeText(kMinBubbleRadius, kMaxBubbleRadius, "metres"), isBubbleRadius);
     bubble.birth =
-        check_.requiredNumber(object, path, "birth", "a number >= 0 (seconds)", nonNegative);
+        check_.requiredNumber(object, path, "birth", rangeText(0, kMaxTrackTime, "seconds"), isTrackTime);
     if (const json* amplitude = findMember(object, "amplitude")) {
       bubble.amplitude = check_.number(*amplitude, memberPath(path, "amplitude"),
-                                       "a number > 0 (Pa at 1 m)", positive);
+                                       rangeText(kMinBubbleAmplitude, kMaxBubbleAmplitude, "Pa at 1 m"),
+                                       isBubbleAmplitude);
     }
     if (const json* track =
             check_.optionalArray(object, path, "track", "an array of track samples")) {
@@ -109,7 +129,7 @@ class TrackSetReader {
     check_.rejectUnknownKeys(object, path, {"t", "depth", "transfer", "position"});
     TrackSample sample;
 
-    sample.time = check_.requiredNumber(object, path, "t", "a number >= 0 (seconds)", nonNegative);
+    sample.time = check_.requiredNumber(object, path, "t", rangeText(0, kMaxTrackTime, "seconds"), isTrackTime);
     if (j > 0 && !(sample.time > bubble.track.back().time)) {
       check_.fail(memberPath(path, "t"),
                   "a time greater than track[" + std::to_string(j - 1) + "].t = " +
@@ -118,8 +138,9 @@ class TrackSetReader {
     }
 
     sample.depth = check_.requiredNumber(
-        object, path, "depth", "a number > radius (" + formatNumber(bubble.radius) + " m)",
-        [&](double v) { return v > bubble.radius; });
+        object, path, "depth",
+        "a number > radius (" + formatNumber(bubble.radius) + " m) and <= " + boundText(kMaxBubbleDepth) + " (metres)",
+        [&](double v) { return isBubbleDepth(v, bubble.radius); });
 
     if (const json* transfer = findMember(object, "transfer")) {
       const std::string transferPath = memberPath(path, "transfer");
@@ -127,7 +148,8 @@ class TrackSetReader {
         check_.fail(transferPath, transferExpected_, describe(*transfer));
       for (std::size_t k = 0; k < transfer->size(); ++k) {
         sample.transfer.push_back(check_.number((*transfer)[k], elementPath(transferPath, k),
-                                                "a number (pressure ratio)", anyValue));
+                                                rangeText(-kMaxTransfer, kMaxTransfer, "pressure ratio"),
+                                                isTransfer));
       }
       if (firstWithTransfer_.empty()) firstWithTransfer_ = path;
     } else if (transferRule_ == TransferValues::Required) {
@@ -136,8 +158,13 @@ class TrackSetReader {
       firstWithoutTransfer_ = path;
     }
 
-    if (const json* position = findMember(object, "position"))
-      sample.position = check_.vector(*position, memberPath(path, "position"), "metres");
+    if (const json* position = findMember(object, "position")) {
+      const std::string positionPath = memberPath(path, "position");
+      sample.position = check_.vector(*position, positionPath, "metres");
+      for (std::size_t a = 0; a < 3; ++a)
+        check_.number((*position)[a], elementPath(positionPath, a),
+                      rangeText(-kMaxTrackCoordinate, kMaxTrackCoordinate, "metres"), isTrackCoordinate);
+    }
     return sample;
   }
 
@@ -241,7 +268,7 @@ acoustics::BubbleTrackSet parseBubbleTracks(std::string_view text, const std::st
   // The documents fluidsound writes are read in one pass; anything else (and every invalid
   // document, for its error message) goes through the JSON tree and the validator.
   if (std::optional<BubbleTrackSet> plain = parsePlainBubbleTracks(text, transfer)) return std::move(*plain);
-  const json root = parseJson(text, fileName, DuplicateKeys::LastWins);
+  const json root = parseJson(text, fileName, DuplicateKeys::Rejected);
   return TrackSetReader(fileName, transfer).read(root);
 }
 
@@ -251,6 +278,7 @@ acoustics::BubbleTrackSet readBubbleTracks(const std::filesystem::path& path) {
 
 acoustics::BubbleTrackSet readBubbleTracks(const std::filesystem::path& path,
                                            TransferValues transfer) {
+  if (path == kStandardInput) return parseBubbleTracks(readStandardInput("standard input"), "standard input", transfer);
   return parseBubbleTracks(readInputFile(path), path.string(), transfer);
 }
 

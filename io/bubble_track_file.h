@@ -28,8 +28,13 @@ acoustics::BubbleTrackSet parseBubbleTracks(std::string_view text, const std::st
 acoustics::BubbleTrackSet parseBubbleTracks(std::string_view text, const std::string& fileName,
                                             TransferValues transfer);
 
-/// @brief Reads and parses a bubble-track file (`transfer` required in every track sample).
-/// @throws InputError if the file is missing or unreadable, or as parseBubbleTracks
+/// The input path that means standard input (as in sox and ffmpeg).
+inline constexpr const char* kStandardInput = "-";
+
+/// @brief Reads and parses a bubble-track file (`transfer` required in every track sample); the
+///        path `-` reads standard input, named "standard input" in errors.
+/// @throws InputError if the file is missing, not a regular file (a FIFO, device, folder) or
+///         unreadable, or as parseBubbleTracks
 acoustics::BubbleTrackSet readBubbleTracks(const std::filesystem::path& path);
 
 /// @brief As above, with `transfer` required or optional (all or nothing).

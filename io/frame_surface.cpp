@@ -11,6 +11,7 @@
 
 #include "io/input_error.h"
 #include "io/vdb_file_check.h"
+#include "io/vdb_header_check.h"
 
 namespace fluidsound::io {
 
@@ -24,7 +25,8 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
-  requireIntactVdbFile(path);  // OpenVDB trusts the lengths in the file (vdb_file_check.h)
+  requireIntactVdbHeader(path);  // OpenVDB trusts the lengths in a damaged header (vdb_header_check.h)
+  requireIntactVdbFile(path);    // and those of the surface grid's tree (vdb_file_check.h)
   try {
     openvdb::io::File file(path.string());
     file.open(/*delayLoad=*/false);  // read in full now, in the order requireIntactVdbFile checked
@@ -33,11 +35,8 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
     grid_->grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
   } catch (const openvdb::Exception& e) {
     throw InputError(path.string(), "", "an OpenVDB file", std::string("an unreadable file (") + e.what() + ")");
-  } catch (const std::bad_alloc&) {
-    // OpenVDB allocates a compressed block's declared size before reading it (io::bloscFromStream);
-    // requireIntactVdbFile bounds each by the file, so this is only a second line of defence.
-    throw InputError(path.string(), "", "an OpenVDB file",
-                     "a corrupt grid (a block larger than the memory could hold)");
+  } catch (const std::exception& e) {  // a damaged tree: a length read as a huge allocation, a short read
+    throw InputError(path.string(), "", "an intact OpenVDB file", std::string("a damaged file (") + e.what() + ")");
   }
   if (!grid_->grid) throw InputError(path.string(), "surface", "a FloatGrid named surface", "none");
   grid_->background = std::abs(grid_->grid->background());

@@ -44,20 +44,27 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-/// Parser callback that rejects a key given twice in one object (nlohmann would keep the last
-/// silently, hiding a typo-level mistake). It follows the JSON path so the error can name it.
-class DuplicateKeyCheck {
+/// Parser callback that limits the nesting depth to kMaxJsonDepth (checked as each array or object
+/// opens, so a deeply nested document stops before it costs more than a few levels) and, with
+/// DuplicateKeys::Rejected, rejects a key given twice in one object (nlohmann would keep the last
+/// silently, hiding a typo-level mistake). Each open level holds its index or key, not its path:
+/// the path is built only for an error message.
+class ParseCheck {
  public:
-  explicit DuplicateKeyCheck(const std::string& file) : file_(&file) {}
+  ParseCheck(const std::string& file, DuplicateKeys duplicates) : file_(&file), duplicates_(duplicates) {}
 
   bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
     switch (event) {
       case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start: {
-        std::string path = childPath();
-        open_.push_back({event == json::parse_event_t::array_start, 0, std::move(path), {}, {}});
+      case json::parse_event_t::array_start:
+        if (open_.size() >= kMaxJsonDepth) {
+          throw InputError(*file_, childPath(),
+                           "at most " + std::to_string(kMaxJsonDepth) + " nested arrays and objects",
+                           "a deeper " + std::string(event == json::parse_event_t::array_start ? "array" : "object"));
+        }
+        advance();
+        open_.push_back({event == json::parse_event_t::array_start, 0, {}, {}});
         break;
-      }
       case json::parse_event_t::object_end:
       case json::parse_event_t::array_end:
         open_.pop_back();
@@ -65,15 +72,14 @@ class DuplicateKeyCheck {
       case json::parse_event_t::key: {
         Container& object = open_.back();
         object.key = parsed.get<std::string>();
-        if (!object.keys.insert(object.key).second) {
-          throw InputError(*file_, memberPath(object.path, object.key),
-                           "each key at most once in an object",
+        if (duplicates_ == DuplicateKeys::Rejected && !object.keys.insert(object.key).second) {
+          throw InputError(*file_, childPath(), "each key at most once in an object",
                            quotedText(object.key) + " a second time");
         }
         break;
       }
       case json::parse_event_t::value:
-        childPath();  // counts array elements
+        advance();  // counts array elements
         break;
     }
     return true;
@@ -82,21 +88,31 @@ class DuplicateKeyCheck {
  private:
   struct Container {
     bool isArray = false;
-    std::size_t nextIndex = 0;
-    std::string path;
-    std::string key;  ///< the member being read (objects)
-    std::set<std::string> keys;
+    std::size_t nextIndex = 0;  ///< arrays: the index of the next element
+    std::string key;            ///< objects: the member being read
+    std::set<std::string> keys; ///< objects: the keys read so far (DuplicateKeys::Rejected)
   };
 
-  /// The path of the value that starts now (advances the index inside an array).
-  std::string childPath() {
-    if (open_.empty()) return "";
-    Container& parent = open_.back();
-    if (parent.isArray) return elementPath(parent.path, parent.nextIndex++);
-    return memberPath(parent.path, parent.key);
+  /// Moves past the value that starts now (the next index inside an array).
+  void advance() {
+    if (!open_.empty() && open_.back().isArray) ++open_.back().nextIndex;
+  }
+
+  /// The JSON path of the value that starts now (before advance()): in the innermost array the
+  /// next index, in the arrays around it the element being read.
+  std::string childPath() const {
+    std::string path;
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      const Container& level = open_[i];
+      const bool innermost = i + 1 == open_.size();
+      path = level.isArray ? elementPath(path, innermost ? level.nextIndex : level.nextIndex - 1)
+                           : memberPath(path, level.key);
+    }
+    return path;
   }
 
   const std::string* file_;
+  DuplicateKeys duplicates_;
   std::vector<Container> open_;
 };
 
@@ -200,21 +216,49 @@ std::string closestKey(std::string_view unknown, std::initializer_list<std::stri
 
 json parseJson(std::string_view text, const std::string& file, DuplicateKeys duplicates) {
   try {
-    if (duplicates == DuplicateKeys::Rejected)
-      return json::parse(text.begin(), text.end(), DuplicateKeyCheck(file));
-    return json::parse(text.begin(), text.end());
+    return json::parse(text.begin(), text.end(), ParseCheck(file, duplicates));
   } catch (const json::exception& error) {  // parse_error, or out_of_range for 1e999
     throw InputError(file, "", "valid JSON", shortJsonMessage(error));
   }
 }
 
+std::string nonRegularInput(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  switch (fs::status(path, ec).type()) {
+    case fs::file_type::regular:
+      return "";
+    case fs::file_type::directory:
+      return "a folder";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::not_found:
+      return "no such file";
+    default:
+      return ec ? ec.message() : "not a regular file";
+  }
+}
+
+std::string readStandardInput(const std::string& name) {
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t count = 0;
+  while ((count = std::fread(buffer, 1, sizeof buffer, stdin)) > 0) text.append(buffer, count);
+  if (std::ferror(stdin) != 0)
+    throw InputError(name, "", "readable standard input", std::generic_category().message(errno));
+  return text;
+}
+
 std::string readInputFile(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    throw InputError(name, "", "a readable file", "no such file");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(name, "", "a readable file", "a folder");
+  const std::string kind = nonRegularInput(path);
+  if (!kind.empty()) throw InputError(name, "", "a readable file", kind);
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr)
     throw InputError(name, "", "a readable file", std::generic_category().message(errno));

@@ -72,6 +72,11 @@ struct KeyRules {
 
 // ---- parsing -------------------------------------------------------------------------------
 
+/// Deepest nesting of arrays and objects an input file may have (scenes and bubble-track files
+/// need fewer than 8 levels); beyond this limit the document is refused as it is read, before the
+/// parse work and memory that grow with the depth.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
 /// Whether a key given twice in one JSON object is an error or the last one silently wins.
 enum class DuplicateKeys { LastWins, Rejected };
 
@@ -80,13 +85,24 @@ enum class DuplicateKeys { LastWins, Rejected };
 /// @param duplicates  with DuplicateKeys::Rejected a key given twice in one object is an error
 ///                    naming its JSON path (nlohmann would otherwise keep the last silently)
 /// @throws InputError "expected valid JSON" with nlohmann's message (a number such as 1e999
-///         included), or "expected each key at most once in an object"
+///         included), "expected each key at most once in an object", or "expected at most 64
+///         nested arrays and objects" naming the path of the first level too deep
 nlohmann::json parseJson(std::string_view text, const std::string& file, DuplicateKeys duplicates);
 
-/// @brief The whole content of an input file.
-/// @throws InputError "expected a readable file" if `path` does not exist, is a folder or cannot
-///         be read
+/// @brief What stands at `path` when it is not a regular file an input can be read from: "no such
+///        file", "a folder", "a FIFO", "a character device", "a block device", "a socket"; empty
+///        for a regular file (symbolic links are followed). Inputs are read from regular files
+///        only: a FIFO or a device would block or never end (docs/cli.md, "Inputs").
+std::string nonRegularInput(const std::filesystem::path& path);
+
+/// @brief The whole content of an input file, which must be a regular file.
+/// @throws InputError "expected a readable file" if `path` does not exist, is not a regular file
+///         (a folder, FIFO, device, socket) or cannot be read
 std::string readInputFile(const std::filesystem::path& path);
+
+/// @brief Everything on standard input (`-` as an input file, as in sox and ffmpeg).
+/// @throws InputError naming `name` if it cannot be read
+std::string readStandardInput(const std::string& name);
 
 // ---- the validator -------------------------------------------------------------------------
 

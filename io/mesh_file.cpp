@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "io/json_validation.h"
 #include "io/mesh_readers.h"
 
 namespace fluidsound::io {
@@ -55,9 +56,7 @@ void requireText(std::string_view text, const MeshErrorReporter& report) {
 
 std::string readWholeFile(const fs::path& path, const MeshErrorReporter& report) {
   const std::string expected = "a readable mesh file (OBJ or PLY)";
-  std::error_code ec;
-  if (!fs::exists(path, ec)) report.fail("", expected, "no such file");
-  if (fs::is_directory(path, ec)) report.fail("", expected, "a folder");
+  if (const std::string kind = nonRegularInput(path); !kind.empty()) report.fail("", expected, kind);
   std::ifstream in(path, std::ios::binary);
   if (!in) report.fail("", expected, std::generic_category().message(errno));
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

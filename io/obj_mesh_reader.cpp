@@ -46,6 +46,28 @@ bool isFloatCoordinate(std::string_view word) {
          std::abs(value) <= std::numeric_limits<float>::max();
 }
 
+/// A face corner `v`, `v/vt`, `v//vn` or `v/vt/vn`: each index that is given is an integer
+/// within ±(2³¹ − 1), which tinyobjloader stores in an int (a larger one wraps around to
+/// another vertex, silently).
+bool isFaceCorner(std::string_view word) {
+  std::size_t part = 0;
+  while (true) {
+    const std::size_t slash = word.find('/');
+    const std::string_view index = word.substr(0, slash);
+    if (!index.empty() || part == 0) {
+      std::int64_t value = 0;
+      const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), value);
+      if (error != std::errc{} || end != index.data() + index.size() ||
+          value > std::numeric_limits<std::int32_t>::max() ||
+          value < -std::numeric_limits<std::int32_t>::max())
+        return false;
+    }
+    if (slash == std::string_view::npos) return true;
+    if (++part > 2) return false;
+    word.remove_prefix(slash + 1);
+  }
+}
+
 /// What our pass learns: the vertex count and, per face in file order, its line and text.
 struct ObjOutline {
   std::size_t vertices = 0;
@@ -84,6 +106,15 @@ ObjOutline outline(std::string_view text, const MeshErrorReporter& report) {
       if (w.size() < 4 || w.size() > kMaxFaceCorners + 1) {
         report.fail(lineLocation(lineNumber), "a face \"f\" of 3 to 255 vertices",
                     quotedExcerpt(line) + " (" + std::to_string(w.size() - 1) + " vertices)");
+      }
+      for (std::size_t c = 1; c < w.size() && w[c].front() != '#'; ++c) {  // up to a comment
+        if (!isFaceCorner(w[c])) {
+          report.fail(
+              lineLocation(lineNumber),
+              "a face corner \"v\", \"v/vt\", \"v//vn\" or \"v/vt/vn\" of integer indices within "
+              "+-2147483647",
+              quotedExcerpt(w[c]) + " in " + quotedExcerpt(line));
+        }
       }
       result.faceLines.push_back(lineNumber);
       result.faceTexts.push_back(line);

@@ -16,8 +16,10 @@
 
 #include "acoustics/oscillator_bank.h"
 #include "io/json_validation.h"
+#include "io/render_limits.h"
 #include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
+#include "sim/fluid_solver.h"
 
 namespace fluidsound::io {
 namespace {
@@ -50,6 +52,11 @@ constexpr double kDefaultListenerHeight = 0.5;
 /// Output frames a scene may ask for (duration × fps): 9 h at 30 fps; far beyond a shot, and
 /// frame numbers stay well inside an int.
 constexpr int kMaxFrames = 1000000;
+
+/// Largest |gravity| [m/s²]: 100 g, beyond any centrifuge a liquid sound would be recorded in.
+constexpr double kMaxGravity = 1000.0;
+
+double norm(const sim::Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 /// Face names in the order of sim::Domain::open.
 constexpr std::array<std::string_view, 6> kFaceNames = {"-x", "+x", "-y", "+y", "-z", "+z"};
@@ -107,8 +114,13 @@ class SceneReader {
     sim::Scene scene;
     scene.domain =
         domain(check_.requiredObject(root, "", "domain", "an object with min, max and cell"));
-    if (const json* gravity = findMember(root, "gravity"))
+    if (const json* gravity = findMember(root, "gravity")) {
       scene.gravity = check_.vector(*gravity, "gravity", "m/s^2");
+      if (!(norm(scene.gravity) <= kMaxGravity)) {
+        check_.fail("gravity", "an acceleration of at most 1000 m/s^2 (about 100 g)",
+                    "|g| = " + roundedNumber(norm(scene.gravity), 6) + " m/s^2");
+      }
+    }
     scene.time = time(check_.requiredObject(root, "", "time", "an object with duration (seconds)"));
     if (const json* seed = findMember(root, "seed")) {
       scene.seed = check_.wholeNumber(*seed, "seed", "an integer >= 0", 0,
@@ -147,6 +159,8 @@ class SceneReader {
     if (const json* bubbles =
             check_.optionalObject(root, "", "bubbles", "an object of bubble-model settings (docs/bubbles.md)"))
       scene.bubbles = readBubbleSettings(check_, *bubbles);
+    requireRenderableLength(scene);
+    requireSubstepBudget(scene);
     return scene;
   }
 
@@ -211,6 +225,52 @@ class SceneReader {
       check_.fail(path, "duration × fps ≤ " + std::to_string(kMaxFrames) + " frames",
                   roundedNumber(frames, 6) + " frames");
     return t;
+  }
+
+  /// The audio of the whole scene (duration × audio.sample_rate × listeners) within
+  /// io::kMaxRenderSamples, named at time.duration (the machine's memory is checked by `run`).
+  void requireRenderableLength(const sim::Scene& scene) const {
+    const double samples = renderSamples(scene.time.duration, scene.sampleRate, scene.listeners.size());
+    if (samples <= kMaxRenderSamples) return;
+    check_.fail("time.duration",
+                "a duration whose audio (duration × audio.sample_rate × listeners) is at most 2^31 samples",
+                roundedNumber(scene.time.duration, 6) + " s × " + roundedNumber(scene.sampleRate, 6) + " Hz × " +
+                    std::to_string(scene.listeners.size()) + " = " + roundedNumber(samples, 4) + " samples");
+  }
+
+  /// The substeps a frame can need, from the fastest speed the scene can produce: its fastest
+  /// source (an emitter's speed or a region's initial velocity) plus the free fall across the domain
+  /// (√(2|g|L), L its diagonal) plus the solver's own gravity margin √(5h|g|) (stableTimeStep), over
+  /// the distance allowed per substep (cfl × cell) and per frame (1 / fps). Above
+  /// sim::kMaxSubstepsPerFrame a frame would (nearly) never end: refused, naming the likely field.
+  void requireSubstepBudget(const sim::Scene& scene) const {
+    const sim::TimeSettings& t = scene.time;
+    const double h = scene.domain.cell, g = norm(scene.gravity);
+    double source = 0.0;
+    std::string sourceField;
+    for (std::size_t e = 0; e < scene.emitters.size(); ++e)
+      if (scene.emitters[e].speed > source)
+        source = scene.emitters[e].speed, sourceField = memberPath(elementPath("emitters", e), "speed");
+    for (std::size_t i = 0; i < scene.liquid.size(); ++i)
+      if (norm(scene.liquid[i].velocity) > source)
+        source = norm(scene.liquid[i].velocity), sourceField = memberPath(elementPath("liquid", i), "velocity");
+    sim::Vec3 diagonal{};
+    for (std::size_t a = 0; a < 3; ++a) diagonal[a] = scene.domain.max[a] - scene.domain.min[a];
+    const double fall = std::sqrt(2.0 * g * norm(diagonal)) + std::sqrt(5.0 * h * g);
+    const auto substeps = [&](double cfl, double fps) { return (source + fall) / (cfl * h * fps); };
+    const double limit = sim::kMaxSubstepsPerFrame;
+    if (substeps(t.cfl, t.fps) <= limit) return;
+    const sim::TimeSettings defaults;
+    std::string field = source > fall ? sourceField : "gravity";
+    if (substeps(defaults.cfl, t.fps) <= limit) field = "time.cfl";
+    else if (substeps(t.cfl, defaults.fps) <= limit) field = "time.fps";
+    check_.fail(field,
+                "at most " + std::to_string(sim::kMaxSubstepsPerFrame) +
+                    " substeps per frame (fastest speed / (time.cfl × domain.cell × time.fps))",
+                roundedNumber(substeps(t.cfl, t.fps), 3) + " substeps: up to " + roundedNumber(source + fall, 4) +
+                    " m/s (" + roundedNumber(source, 4) + " from emitters and liquid velocity, " +
+                    roundedNumber(fall, 4) + " from gravity over the domain) / (" + roundedNumber(t.cfl, 6) + " × " +
+                    roundedNumber(h, 6) + " m × " + roundedNumber(t.fps, 6) + " fps)");
   }
 
   // ---- listeners, solver ----------------------------------------------------------------------

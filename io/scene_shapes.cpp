@@ -126,14 +126,25 @@ void requireOrdered(const JsonValidator& check, const json& box, const std::stri
   }
 }
 
+/// |velocity| of a liquid region and an emitter's speed [m/s]: two thirds of the speed of sound in
+/// water (1480 m/s); far beyond it the incompressible model, and the scene, make no sense.
+constexpr double kMaxLiquidSpeed = 1000.0;
+
 sim::LiquidRegion readLiquidRegion(const JsonValidator& check, const json& item,
                                    const std::string& path, const fs::path& folder) {
   check.requireObject(item, path, "an object with one of box, sphere or mesh");
   check.rejectUnknownKeys(item, path, {"box", "sphere", "mesh", "velocity"});
   sim::LiquidRegion region;
   region.shape = shape(check, item, path, folder);
-  if (const json* velocity = findMember(item, "velocity"))
+  if (const json* velocity = findMember(item, "velocity")) {
     region.velocity = check.vector(*velocity, memberPath(path, "velocity"), "m/s");
+    const sim::Vec3& v = region.velocity;
+    const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(speed <= kMaxLiquidSpeed)) {
+      check.fail(memberPath(path, "velocity"), "a velocity of at most 1000 m/s (two thirds of the speed of sound in water)",
+                 "|v| = " + formatNumber(speed) + " m/s");
+    }
+  }
   return region;
 }
 
@@ -149,7 +160,9 @@ sim::Emitter readEmitter(const JsonValidator& check, const json& item, const std
   e.center = check.requiredVector(disk, diskPath, "center", "metres");
   e.normal = unitDirection(check, disk, diskPath, "normal");
   e.radius = check.requiredNumber(disk, diskPath, "radius", "a number > 0 (metres)", positive);
-  e.speed = check.requiredNumber(item, path, "speed", "a number > 0 (m/s)", positive);
+  e.speed = check.requiredNumber(item, path, "speed",
+                                 "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)",
+                                 [](double v) { return v > 0 && v <= kMaxLiquidSpeed; });
   e.start = check.optionalNumber(item, path, "start", 0.0, "a number >= 0 (seconds)", nonNegative);
   if (const json* end = findMember(item, "end")) {
     e.end = check.number(*end, memberPath(path, "end"),

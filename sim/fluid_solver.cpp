@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -286,11 +287,40 @@ double FluidSolver::stableTimeStep() const {
   return speed > 0.0 ? scene_.time.cfl * grid_.cellSize / speed : 1e300;
 }
 
+SubstepLimitError FluidSolver::substepLimitError(double until, double dt) const {
+  float particleSpeed2 = 0.0f;
+  for (const Vec3f& v : particles_.velocity) particleSpeed2 = std::max(particleSpeed2, v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const double particleSpeed = std::sqrt(static_cast<double>(particleSpeed2));
+  double emitterSpeed = 0.0, initialSpeed = 0.0;
+  for (const Emitter& e : scene_.emitters) emitterSpeed = std::max(emitterSpeed, e.speed);
+  for (const LiquidRegion& r : scene_.liquid)
+    initialSpeed = std::max(initialSpeed, std::sqrt(r.velocity[0] * r.velocity[0] + r.velocity[1] * r.velocity[1] +
+                                                    r.velocity[2] * r.velocity[2]));
+  const Vec3& g = scene_.gravity;
+  const double gravityTerm = std::sqrt(5.0 * grid_.cellSize * std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+  // The likely cause: a CFL far below the default, a speed the scene sets, else the flow itself.
+  constexpr double kSmallCfl = 0.01;  // 100 times the default's substeps
+  std::string fields;
+  if (scene_.time.cfl < kSmallCfl) fields = "time.cfl";
+  else if (gravityTerm >= std::max(particleSpeed, emitterSpeed)) fields = "gravity, time.cfl";
+  else if (emitterSpeed >= 0.5 * particleSpeed) fields = "emitters[].speed, time.cfl";
+  else if (initialSpeed >= 0.5 * particleSpeed) fields = "liquid[].velocity, time.cfl";
+  else fields = "the flow (its speed grew far beyond the scene's: unstable?), time.cfl";
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "more than %d substeps for the frame ending at %.6g s (at %.6g s the step is %.3g s: fastest particle "
+                "%.4g m/s, emitters %.4g m/s, gravity margin %.4g m/s, cfl %g, cell %g m)",
+                substepLimit_, until, time_, dt, particleSpeed, emitterSpeed, gravityTerm, scene_.time.cfl,
+                grid_.cellSize);
+  return SubstepLimitError(text, fields);
+}
+
 FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer) {
   FrameStats stats;
   while (time_ < until) {
     double dt = std::min(stableTimeStep(), until - time_);
     if (until - time_ - dt < kMinimumSubstepFraction * dt && until - time_ > dt) dt = 0.5 * (until - time_);
+    if (stats.substeps >= substepLimit_) throw substepLimitError(until, dt);
     substep(dt, stats, observer);
     time_ = (until - time_ - dt <= 0.0) ? until : time_ + dt;
     ++stats.substeps;

@@ -8,6 +8,9 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "sim/array3.h"
 #include "sim/grid.h"
@@ -57,6 +60,23 @@ struct FluidProperties {
   double density = 998.0;  ///< ρ [kg/m³], water at 20 °C
 };
 
+/// Substeps one frame may take (docs/scene.md, "Substeps"): a scene whose fastest possible speed
+/// needs more is refused when it is read (io/scene_file.cpp), and advanceTo stops a frame that
+/// reaches it (a CFL of 1e-12 or an emitter at 10⁶ m/s would make a frame that never ends).
+inline constexpr int kMaxSubstepsPerFrame = 10000;
+
+/// @brief A frame needed more than its substep limit. what() is one line with the time step and
+///        the speeds that set it; likelyFields() names the scene fields to look at.
+class SubstepLimitError : public std::runtime_error {
+ public:
+  SubstepLimitError(const std::string& message, std::string likelyFields)
+      : std::runtime_error(message), likelyFields_(std::move(likelyFields)) {}
+  const std::string& likelyFields() const { return likelyFields_; }
+
+ private:
+  std::string likelyFields_;
+};
+
 /// Called at the end of every substep with the liquid after it (views, valid during the call),
 /// the substep's start time t [s] and length dt [s]: the bubble model's hook.
 using SubstepObserver = std::function<void(const LiquidState& liquid, double t, double dt)>;
@@ -72,7 +92,11 @@ class FluidSolver {
 
   /// @brief Advances to time `until` [s] in CFL-limited substeps, calling `observer` (if any)
   ///        after each, then corrects and reseeds the particles once (call once per frame).
+  /// @throws SubstepLimitError before a substep beyond the limit (kMaxSubstepsPerFrame unless
+  ///         limitSubstepsPerFrame set another)
   FrameStats advanceTo(double until, const SubstepObserver& observer = {});
+  /// @brief The substep limit of advanceTo, > 0 (tests set a small one to reach it quickly).
+  void limitSubstepsPerFrame(int limit) { substepLimit_ = limit; }
 
   double time() const { return time_; }
   const GridGeometry& grid() const { return grid_; }
@@ -88,6 +112,8 @@ class FluidSolver {
   struct Workspace;
   double substep(double dt, FrameStats& stats, const SubstepObserver& observer);
   double stableTimeStep() const;
+  /// The SubstepLimitError for a frame ending at `until` whose next step is `dt` [s].
+  SubstepLimitError substepLimitError(double until, double dt) const;
   /// The liquid distance at cell centres from the sorted particles.
   Array3f surfaceFromParticles(const struct CellIndex& index) const;
   LevelSetHold levelSetHold() const;
@@ -102,6 +128,7 @@ class FluidSolver {
   FluidProperties properties_;
   GridGeometry grid_;
   double time_ = 0.0;
+  int substepLimit_ = kMaxSubstepsPerFrame;
   double particleRadius_ = 0.0;
   std::uint64_t reseedPasses_ = 0;
   std::uint64_t nextParticleId_ = 0;  ///< the id the next new particle gets (particle_ids.h)

@@ -28,6 +28,7 @@
 #include "io/scene_file.h"
 #include "io/text_file.h"
 #include "tools/cell_option.h"
+#include "tools/render_memory.h"
 #include "tools/solver_memory.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
@@ -166,6 +167,7 @@ int runRunCommand(const RunOptions& o) {
   // Bad input (the scene, --cell) stops here, before any output.
   const sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
+  requireMemoryForRender(scene, o.scene, physicalMemoryBytes());
   const std::string hash = inputHash(scene);
   const std::filesystem::path out = o.output;
   const std::string audioFile = audioName(scene.file, o.audio);

@@ -127,7 +127,13 @@ int runSimulateCommand(const SimulateOptions& o) {
       stats.particles = solver.particles().size();
       stats.liquidVolume = sim::liquidVolume(solver.liquidDistance(), solver.grid());
     } else {
-      stats = solver.advanceTo(f / scene.time.fps, stepBubbles);
+      try {
+        stats = solver.advanceTo(f / scene.time.fps, stepBubbles);
+      } catch (const sim::SubstepLimitError& e) {  // bad input: the scene asks for what cannot end
+        throw io::InputError(o.scene, e.likelyFields(),
+                             "a frame that ends within " + std::to_string(sim::kMaxSubstepsPerFrame) + " substeps",
+                             "frame " + std::to_string(f) + " needs " + e.what());
+      }
       const auto s0 = Clock::now();
       bubbles.sampleFrame(solver.time());  // the bubble model's too, not the fluid's
       bubbleSeconds += stats.stageSeconds.bubbles + std::chrono::duration<double>(Clock::now() - s0).count();

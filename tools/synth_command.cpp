@@ -17,7 +17,9 @@
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
 #include "tools/progress_display.h"
+#include "tools/render_memory.h"
 #include "tools/run_report.h"
+#include "tools/solver_memory.h"
 
 namespace fluidsound::tools {
 
@@ -73,6 +75,7 @@ int runSynthCommand(const SynthOptions& o) {
   settings.sampleRate = o.audio.sampleRate.value_or(tracks.sampleRate);
   settings.duration = o.duration ? o.duration : tracks.duration;
   settings.model = o.model;
+  requireMemoryForRender(tracks, o.input, settings, o.duration, physicalMemoryBytes());
   acoustics::SynthesisResult result;
   {
     const double audioSeconds = settings.duration.value_or(0.0);

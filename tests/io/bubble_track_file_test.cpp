@@ -173,27 +173,27 @@ TEST(BubbleTrackFile, NegativeRadiusIsNamedWithItsValue) {
   document["bubbles"][1]["radius"] = -0.001;
   const InputError error = parseError(document.dump());
   EXPECT_STREQ(error.what(),
-               "drip.json: bubbles[1].radius: expected a number > 0 (metres), found -0.001");
+               "drip.json: bubbles[1].radius: expected a number from 1e-06 to 1 (metres), found -0.001");
 }
 
 TEST(BubbleTrackFile, NonNumericRadiusIsNamed) {
   json document = designExample();
   document["bubbles"][0]["radius"] = "1mm";
   expectError(parseError(document.dump()), "bubbles[0].radius",
-              R"(a number > 0 (metres), found "1mm")");
+              R"(a number from 1e-06 to 1 (metres), found "1mm")");
 }
 
 TEST(BubbleTrackFile, MissingBirthIsNamed) {
   json document = designExample();
   document["bubbles"][1].erase("birth");
   expectError(parseError(document.dump()), "bubbles[1].birth",
-              "a number >= 0 (seconds), found nothing (required)");
+              "a number from 0 to 1e+06 (seconds), found nothing (required)");
 }
 
 TEST(BubbleTrackFile, NonPositiveSampleRateIsNamed) {
   json document = designExample();
   document["sample_rate"] = 0;
-  expectError(parseError(document.dump()), "sample_rate", "a number > 0 (Hz), found 0");
+  expectError(parseError(document.dump()), "sample_rate", "an integer from 8000 to 768000 (Hz), found 0");
 }
 
 TEST(BubbleTrackFile, NonStringListenerIsNamed) {
@@ -207,7 +207,7 @@ TEST(BubbleTrackFile, DepthNotAboveTheRadiusIsNamed) {
   json document = designExample();
   document["bubbles"][0]["track"][1]["depth"] = 0.001;
   expectError(parseError(document.dump()), "bubbles[0].track[1].depth",
-              "a number > radius (0.001 m), found 0.001");
+              "a number > radius (0.001 m) and <= 11000 (metres), found 0.001");
 }
 
 TEST(BubbleTrackFile, UnsortedTrackNamesThePreviousTime) {
@@ -221,7 +221,7 @@ TEST(BubbleTrackFile, NegativeTrackTimeIsNamed) {
   json document = designExample();
   document["bubbles"][0]["track"][0]["t"] = -0.1;
   expectError(parseError(document.dump()), "bubbles[0].track[0].t",
-              "a number >= 0 (seconds), found -0.1");
+              "a number from 0 to 1e+06 (seconds), found -0.1");
 }
 
 TEST(BubbleTrackFile, WrongTransferLengthNamesTheListenerCount) {
@@ -243,7 +243,7 @@ TEST(BubbleTrackFile, NonNumericTransferEntryIsNamed) {
   json document = designExample();
   document["bubbles"][0]["track"][0]["transfer"][1] = nullptr;
   expectError(parseError(document.dump()), "bubbles[0].track[0].transfer[1]",
-              "a number (pressure ratio), found null");
+              "a number from -1e+06 to 1e+06 (pressure ratio), found null");
 }
 
 TEST(BubbleTrackFile, MissingTransferIsNamed) {
@@ -326,7 +326,7 @@ TEST(BubbleTrackFile, ReadFileErrorsNameThePathAsGiven) {
     FAIL() << "no InputError";
   } catch (const InputError& error) {
     EXPECT_EQ(std::string(error.what()),
-              path.string() + ": bubbles[0].radius: expected a number > 0 (metres), found 0");
+              path.string() + ": bubbles[0].radius: expected a number from 1e-06 to 1 (metres), found 0");
   }
 }
 

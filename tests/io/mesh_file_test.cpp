@@ -312,6 +312,29 @@ TEST(MeshFile, IndexOutOfRangeIsNamedWithItsFace) {
                          ExpectedAt::RightAfterHead);
 }
 
+// Claim: an index beyond 32 bits is refused, not wrapped onto another vertex. 4294967299 is
+// 2^32 + 3: tinyobjloader's int wraps it to 3, so this face was read as "f 1 2 3" before. A PLY
+// index list is of an integer type, each value checked against its type (2^32 for uint32).
+TEST(MeshFile, IndexBeyond32BitsIsRejectedNotWrapped) {
+  const test::TempFolder folder;
+  const fs::path obj = write(folder, "wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967299\n");
+  test::expectInputError(readError(obj), obj.string(), "line 4",
+                         "a face corner \"v\", \"v/vt\", \"v//vn\" or \"v/vt/vn\" of integer indices "
+                         "within +-2147483647, found \"4294967299\" in \"f 1 2 4294967299\"",
+                         ExpectedAt::RightAfterHead);
+  const fs::path texture = write(folder, "vt.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/99999999999 2 3\n");
+  test::expectInputError(readError(texture), texture.string(), "line 5", "found \"1/99999999999\"",
+                         ExpectedAt::Anywhere);
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967299\n";
+  const fs::path plyPath = write(folder, "wrap.ply", ply);
+  test::expectInputError(readError(plyPath), plyPath.string(), "face 0",
+                         "a list entry of property \"vertex_indices\" (uint), found \"4294967299\"",
+                         ExpectedAt::RightAfterHead);
+}
+
 TEST(MeshFile, FacesOfFewerThanThreeVerticesAreRejected) {
   const test::TempFolder folder;
   const fs::path obj = write(folder, "line.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n");

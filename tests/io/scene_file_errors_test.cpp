@@ -46,6 +46,17 @@ TEST(SceneFile, KeyGivenTwiceInsideAnArrayItemIsNamedWithItsIndex) {
   expectError(error, "liquid[1].velocity", "each key at most once in an object");
 }
 
+// Claim: a scene nested 100 000 levels deep (200 KB; gigabytes if each open level held its path) is
+// refused as it is read at the 65th level, naming that level's path and the limit (64).
+TEST(SceneFile, NestingDeeperThanTheLimitIsRefusedWhereItIsHit) {
+  const std::size_t levels = 100000;
+  const InputError error = parseError(R"({"format": "fluidsound.scene/1", "liquid": [{"box": )" +
+                                      std::string(levels, '[') + std::string(levels, ']') + "}]}");
+  std::string field = "liquid[0].box";
+  for (std::size_t level = 4; level <= 64; ++level) field += "[0]";  // levels 1–3: {, liquid, [0]
+  expectError(error, field, "at most 64 nested arrays and objects, found a deeper array");
+}
+
 TEST(SceneFile, TopLevelArrayIsRejected) {
   expectError(parseError("[1, 2]"), "",
               "a JSON object (a fluidsound.scene/1 document), found an array of 2 values");
@@ -274,7 +285,7 @@ TEST(SceneFile, EmitterWithoutSpeedIsNamed) {
   json document = fullScene();
   document["emitters"][0].erase("speed");
   expectError(parseError(document.dump()), "emitters[0].speed",
-              "a number > 0 (m/s), found nothing (required)");
+              "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water), found nothing (required)");
 }
 
 TEST(SceneFile, UnsortedPathKeysNameTheKeyOutOfOrder) {

@@ -126,6 +126,27 @@ const std::vector<SimulateCase> kSimulateCases = {
     {"solver", Input::Scene, "/solver/particles_per_cell", "0", Output::Fresh, "out", kExitBadInput,
      "scene.json", "solver.particles_per_cell: expected an integer from 1 to 64, found 0"},
 
+    // ---- bad input: a frame that would never end, audio too long (exit 3 before any frame) -------
+    {"cfl_tiny", Input::Scene, "/time/cfl", "1e-12", Output::Fresh, "out", kExitBadInput, "scene.json",
+     "time.cfl: expected at most 10000 substeps per frame (fastest speed / (time.cfl × domain.cell × time.fps)), "
+     "found 2.4e+12 substeps: up to 7.215 m/s (2 from emitters and liquid velocity, 5.215 from gravity over the "
+     "domain) / (1e-12 × 0.05 m × 60 fps)"},
+    {"gravity_huge", Input::Scene, "/gravity", "[0, -1e30, 0]", Output::Fresh, "out", kExitBadInput, "scene.json",
+     "gravity: expected an acceleration of at most 1000 m/s^2 (about 100 g), found |g| = 1e+30 m/s^2"},
+    {"emitter_speed_huge", Input::Scene, "/emitters",
+     R"([{"disk": {"center": [0.3, 0.25, 0.05], "normal": [0, -1, 0], "radius": 0.004}, "speed": 1e6}])",
+     Output::Fresh, "out", kExitBadInput, "scene.json",
+     "emitters[0].speed: expected a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water), found "
+     "1000000.0"},
+    {"liquid_velocity_huge", Input::Scene, "/liquid/1/velocity", "[0, -1e6, 0]", Output::Fresh, "out", kExitBadInput,
+     "scene.json",
+     "liquid[1].velocity: expected a velocity of at most 1000 m/s (two thirds of the speed of sound in water), found "
+     "|v| = 1000000.0 m/s"},
+    {"audio_too_long", Input::Scene, "/time", R"({"duration": 30000, "fps": 30})", Output::Fresh, "out",
+     kExitBadInput, "scene.json",
+     "time.duration: expected a duration whose audio (duration × audio.sample_rate × listeners) is at most 2^31 "
+     "samples, found 30000 s × 44100 Hz × 2 = 2.646e+09 samples"},
+
     // ---- bad input: the file itself, unknown keys, and bad input before bad output --------------
     {"unknown_key", Input::Scene, "/solids/1/sphere/radus", "0.01", Output::Fresh, "out",
      kExitBadInput, "scene.json",
