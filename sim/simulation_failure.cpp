@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <limits>
 
 namespace fluidsound::sim {
@@ -15,7 +14,9 @@ namespace {
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 /// The lowest index in [0, count) for which `bad` holds, or kNone: the same on any thread count.
-std::size_t firstIndex(std::size_t count, const std::function<bool(std::size_t)>& bad) {
+/// A template, not std::function: it runs over every particle and face each substep.
+template <typename Bad>
+std::size_t firstIndex(std::size_t count, const Bad& bad) {
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, count), kNone,
       [&](const tbb::blocked_range<std::size_t>& r, std::size_t found) {
