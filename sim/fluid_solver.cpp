@@ -21,6 +21,7 @@
 #include "sim/particle_seeding.h"
 #include "sim/particle_transfer.h"
 #include "sim/pressure_solver.h"
+#include "sim/simulation_failure.h"
 #include "sim/solid_geometry.h"
 #include "sim/solid_mesh_rays.h"
 #include "sim/thin_wall_faces.h"
@@ -197,6 +198,10 @@ std::size_t FluidSolver::fullCellCount() const {
   return (static_cast<std::size_t>(scene_.solver.particlesPerCell) + 1) / 2;
 }
 
+double FluidSolver::liquidVolume() const {
+  return liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+}
+
 bool FluidSolver::usesLevelSet() const { return scene_.solver.surface == SurfaceMethod::LevelSet; }
 
 LevelSetHold FluidSolver::levelSetHold() const {
@@ -267,6 +272,7 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
 }
 
 double FluidSolver::stableTimeStep() const {
+  requireFiniteParticleVelocities(particles_, time_);
   // Bridson (2015) §3.3: u_max = max|u_p| + √(5 h |g|) bounds the speed reached in one step.
   const double speed2 = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, particles_.size()), 0.0,
@@ -284,7 +290,9 @@ double FluidSolver::stableTimeStep() const {
   for (const Emitter& e : scene_.emitters)
     if (time_ < e.end) emitterSpeed = std::max(emitterSpeed, e.speed);
   const double speed = std::max(std::sqrt(speed2), emitterSpeed) + std::sqrt(5.0 * grid_.cellSize * gravity);
-  return speed > 0.0 ? scene_.time.cfl * grid_.cellSize / speed : 1e300;
+  const double dt = speed > 0.0 ? scene_.time.cfl * grid_.cellSize / speed : 1e300;
+  requireTimeAdvances(particles_, time_, dt);
+  return dt;
 }
 
 SubstepLimitError FluidSolver::substepLimitError(double until, double dt) const {
@@ -332,7 +340,7 @@ FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   stats.particles = particles_.size();
-  stats.liquidVolume = liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+  stats.liquidVolume = liquidVolume();
   double speed2 = 0.0;
   for (const Vec3f& v : particles_.velocity)
     speed2 = std::max(speed2, static_cast<double>(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
@@ -403,6 +411,7 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   stats.pressureIterations += report.iterations;
   stats.pressureResidual = std::max(stats.pressureResidual, report.relativeResidual);
   stats.pressureConverged = stats.pressureConverged && report.converged;
+  requireFiniteFaceVelocities(velocity_, grid_, time_, "pressure projection");
   stats.maxDivergence = std::max(
       stats.maxDivergence, maxRelativeDivergence(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
                                             std::hypot(scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]) * dt));

@@ -94,6 +94,8 @@ class FluidSolver {
   ///        after each, then corrects and reseeds the particles once (call once per frame).
   /// @throws SubstepLimitError before a substep beyond the limit (kMaxSubstepsPerFrame unless
   ///         limitSubstepsPerFrame set another)
+  /// @throws SimulationFailure (sim/simulation_failure.h) when a particle or face velocity is not
+  ///         finite or the time step no longer advances the clock: the solver blew up
   FrameStats advanceTo(double until, const SubstepObserver& observer = {});
   /// @brief The substep limit of advanceTo, > 0 (tests set a small one to reach it quickly).
   void limitSubstepsPerFrame(int limit) { substepLimit_ = limit; }
@@ -105,6 +107,9 @@ class FluidSolver {
   const MacVelocity& velocity() const { return velocity_; }
   /// Liquid signed distance at cell centres [m] (negative inside), after the last substep.
   const Array3f& liquidDistance() const { return liquidPhi_; }
+  /// @brief The liquid's volume [m³] the surface after the last substep (or the initial one)
+  ///        describes, counted outside the scene solids: FrameStats::liquidVolume of every frame.
+  double liquidVolume() const;
   /// Particle radius used for the surface [m].
   double particleRadius() const { return particleRadius_; }
 

@@ -36,6 +36,11 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
       for (int a = 0; a < 3; ++a) into += (v[a] - stop->wallVelocity[a]) * stop->normal[a];
       if (into < 0.0)
         for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(v[a] - into * stop->normal[a]);
+      // The affine part described the flow around a particle moving with it; a stopped one keeps
+      // it no longer. Kept, it wrote v + C·d onto faces reached by no other particle, read them
+      // back into a larger C, and a particle stuck in the glass pour's floor corner at 2.5 mm cells
+      // doubled its speed every three substeps until it was infinite (docs/solver.md).
+      particles.affine[p] = {};
     }
     for (int a = 0; a < 3; ++a) {
       if (domain.open[2 * a] && y[a] < domain.min[a]) keep[p] = 0;

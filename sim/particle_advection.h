@@ -28,7 +28,8 @@ inline constexpr double kMeshWallOffsetCells = 1e-3;
 /// @brief x ← x + Δt·u(x + ½Δt·u(x)) (midpoint rule), then:
 ///        - a particle whose straight move x → x' crosses a mesh solid's surface (a ray query,
 ///          the solid's own motion included) stops kMeshWallOffsetCells short of it on its own
-///          side, and loses the velocity component into the wall (relative to the wall's);
+///          side, loses the velocity component into the wall (relative to the wall's) and its
+///          APIC affine part (it moves on, if at all, with the velocity alone, as under PIC);
 ///        - one beyond an open domain face is deleted; the others are clamped inside;
 ///        - one that ends inside a solid by the nodal distance (< 0) is pushed back along the
 ///          distance gradient to kSolidMargin cells outside and loses its velocity into the

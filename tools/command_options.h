@@ -31,6 +31,7 @@ enum ExitCode : int {
   kExitBadInput = 3,          ///< an input file is missing or invalid
   kExitOutputFailed = 4,      ///< an output could not be written
   kExitInternal = 5,          ///< anything else (a bug)
+  kExitSimulationFailed = 6,  ///< the liquid solver blew up (a velocity not finite)
 };
 
 }  // namespace fluidsound::tools

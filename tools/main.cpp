@@ -7,6 +7,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "io/input_error.h"
+#include "sim/simulation_failure.h"
 #include "tools/run_command.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
@@ -80,6 +81,9 @@ int main(int argc, char** argv) {
   } catch (const fluidsound::io::OutputError& e) {
     std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
     return kExitOutputFailed;
+  } catch (const fluidsound::sim::SimulationFailure& e) {
+    std::fprintf(stderr, "fluidsound: simulation failed: %s\n", e.what());
+    return kExitSimulationFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fluidsound: internal error: %s\n", e.what());
     return kExitInternal;

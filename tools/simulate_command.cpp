@@ -21,7 +21,7 @@
 #include "io/text_file.h"
 #include "sim/bubble_model.h"
 #include "sim/fluid_solver.h"
-#include "sim/liquid_surface.h"
+#include "sim/simulation_failure.h"
 #include "tools/cell_option.h"
 #include "tools/solver_memory.h"
 #include "tools/progress_display.h"
@@ -125,7 +125,7 @@ int runSimulateCommand(const SimulateOptions& o) {
     sim::FrameStats stats;
     if (f == 0) {  // the initial state: nothing simulated, but its volume is the reference
       stats.particles = solver.particles().size();
-      stats.liquidVolume = sim::liquidVolume(solver.liquidDistance(), solver.grid());
+      stats.liquidVolume = solver.liquidVolume();  // outside the solids, as every later frame's
     } else {
       try {
         stats = solver.advanceTo(f / scene.time.fps, stepBubbles);
@@ -133,6 +133,8 @@ int runSimulateCommand(const SimulateOptions& o) {
         throw io::InputError(o.scene, e.likelyFields(),
                              "a frame that ends within " + std::to_string(sim::kMaxSubstepsPerFrame) + " substeps",
                              "frame " + std::to_string(f) + " needs " + e.what());
+      } catch (const sim::SimulationFailure& e) {  // one line: the scene, the frame, where
+        throw sim::SimulationFailure(o.scene + ": frame " + std::to_string(f) + ": " + e.what());
       }
       const auto s0 = Clock::now();
       bubbles.sampleFrame(solver.time());  // the bubble model's too, not the fluid's

@@ -3,9 +3,14 @@
 // acceptance point. The data, their sources, the scene and the front's definition are in
 // tests/support/martin_moyce.h; tests/bench/martin_moyce_bench.cpp prints the whole comparison
 // at a/Δx = 10, 20 and 40.
+// The comparison with the experiment delays the simulated front by one fitted constant (the
+// first test below says why, with its sources); the second checks the grid resolves the front.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "support/martin_moyce.h"
@@ -18,47 +23,81 @@ namespace mm = test::martin_moyce;
 /// The acceptance window of the issue, 1 ≤ T ≤ 3 [-].
 constexpr double kFirstTime = 1.0, kLastTime = 3.0;
 
-// Claim (issue 4): at a/Δx = 10 the simulated surge front Z(T) lies within 10 % of Martin &
-// Moyce's measured front at every tabulated station with 1 ≤ T ≤ 3.
-// Reference: mm::kTabulatedFront, Martin & Moyce (1952) n² = 2, a = 2¼ in (source and
-// transcriptions in martin_moyce.h).
-// Tolerance: 10 % of Z, the issue's figure. It is wider than the experiment's own scatter: the
-// paper's table and its Fig. 3 (PySPH's digitisation) differ by up to 2.5 % for the same column,
-// the 2¼ in and 1⅛ in columns by up to 4.5 % (at T ≈ 3).
-// Front: where the liquid surface meets the floor (mm::surgeFrontPosition); other definitions
-// move Z by < 0.1, so the definition does not decide the outcome.
-// Time origin: no shift, T = 0 at the release in both. Removing a gate or diaphragm takes time
-// and changes the first instants of a dam break (Aleixo, Soares-Frazão, Altinakar & Zech 2013,
-// "The gate removal effect in the initial instants of the dam-break flow", IAHR World Congress),
-// so the experiment's effective start may trail its T = 0; but we found no published value of that
-// delay for Martin & Moyce's release, and a shift fitted to these data would make the test unable
-// to fail. Lethe's dam-break example adds 0.175 to the simulated T without stating why; we do not
-// adopt it (with it the Martin & Moyce points would pass, largest errors 6–8 % at a/Δx = 10 and
-// 8–10 % at 20, while Koshizuka & Oka's repeat of the experiment would still miss by 12–13 %).
-// Status: FAILS, expected to until the release is modelled or a published delay is found, so it
-// is DISABLED_ (run it with --gtest_also_run_disabled_tests); issue 4 stays open on this point. On the
-// solver with the Zhu–Bridson particle surface (no density correction) the simulated front leads
-// at every station: by 9–18 % at a/Δx = 10 (7 of 11 stations outside 10 %), 11–20 % at 20 and 40;
-// 40 and 80 agree within 0.015 in Z, so this is the converged inviscid answer. The experiment
-// trails by a nearly constant ΔT = 0.27 ± 0.03 (a/Δx = 20–40; 13–16 ms at a = 2¼ in) from
-// T = 0.84 to 3.33, while at its first station (T = 0.41, Z = 1.11) the two agree. Particle count
-// (8 or 27 per cell), CFL number (1 or 0.5), APIC or FLIP, frame length and depth cells each move
-// Z by < 0.03 (at a/Δx = 20), the scale a by < 0.01. An independent solver reports the same lead:
-// OpenFOAM interFoam on this column, 9.8 % ahead on average and mesh-independent
-// (vamseeachanta/digitalmodel, pull request 1260). tests/bench/martin_moyce_bench.cpp prints the
-// current figures.
-TEST(MartinMoyce, DISABLED_SurgeFrontWithinTenPercentOfExperiment) {
-  const std::vector<mm::FrontSample> simulated = mm::simulateFront(10, kLastTime + mm::kFrameTime);
+/// Least-squares slope dZ/dT [-] of the history's samples with first ≤ T ≤ last.
+double frontSlope(std::span<const mm::FrontSample> history, double first, double last) {
+  double n = 0, st = 0, sz = 0, stt = 0, stz = 0;
+  for (const mm::FrontSample& s : history) {
+    if (s.time < first - 1e-9 || s.time > last + 1e-9) continue;
+    n += 1, st += s.time, sz += s.front, stt += s.time * s.time, stz += s.time * s.front;
+  }
+  return (n * stz - st * sz) / (n * stt - st * st);
+}
+
+/// RMS over the tabulated stations with kFirstTime ≤ T ≤ kLastTime of the relative error of the
+/// simulated front delayed by `shift`: Z_sim(T − shift) against the measured Z(T) [-].
+double rmsRelativeError(std::span<const mm::FrontSample> simulated, double shift) {
+  double sum = 0.0;
   int stations = 0;
   for (const mm::FrontSample& measured : mm::kTabulatedFront) {
     if (measured.time < kFirstTime || measured.time > kLastTime) continue;
+    const double error = mm::frontAt(simulated, measured.time - shift) / measured.front - 1.0;
+    sum += error * error;
     ++stations;
-    const double front = mm::frontAt(simulated, measured.time);
-    EXPECT_NEAR(front, measured.front, 0.10 * measured.front)
-        << "T = " << measured.time << ": simulated Z = " << front << ", Martin & Moyce Z = "
-        << measured.front << " (" << 100.0 * (front / measured.front - 1.0) << " %)";
   }
-  EXPECT_EQ(stations, 11);
+  return std::sqrt(sum / stations);
+}
+
+/// The delay ΔT [-] that minimises Σ (Z_sim(T − ΔT) − Z(T))² over the same stations: a scan in
+/// steps of 0.001 over 0 … 0.6 (the sum is smooth; 0.001 is far below the test's bounds).
+double bestShift(std::span<const mm::FrontSample> simulated) {
+  double best = 0.0, bestSum = std::numeric_limits<double>::infinity();
+  for (int step = 0; step <= 600; ++step) {
+    const double shift = 0.001 * step;
+    double sum = 0.0;
+    for (const mm::FrontSample& measured : mm::kTabulatedFront) {
+      if (measured.time < kFirstTime || measured.time > kLastTime) continue;
+      const double d = mm::frontAt(simulated, measured.time - shift) - measured.front;
+      sum += d * d;
+    }
+    if (sum < bestSum) bestSum = sum, best = shift;
+  }
+  return best;
+}
+
+// Claim (issue 16 §8): at a/Δx = 20 the simulated surge front matches Martin & Moyce's measured
+// front once delayed by one constant ΔT, the lead inviscid codes show: (a) the least-squares ΔT
+// lies in [0.15, 0.32], (b) the RMS relative error of Z after that shift is ≤ 4 % over the
+// stations with 1 ≤ T ≤ 3, and (c) the front's slope dZ/dT on 1.43 ≤ T ≤ 3.33 is 1.32 ± 0.15.
+// Reference: mm::kTabulatedFront, Martin & Moyce (1952) Table 2, n² = 2, a = 2¼ in (sources and
+// transcriptions in martin_moyce.h); the slope 1.32 is the data's own over those stations
+// (least squares: printed below as "measured slope").
+// Why a shift: the experiment's effective start trails its T = 0 (the release of the column
+// takes time; Aleixo, Soares-Frazão, Altinakar & Zech 2013 on the gate removal effect), and
+// inviscid computations lead the data by a nearly constant ΔT: Koshizuka & Oka's own MPS
+// computation (1996, Nucl. Sci. Eng. 123, 421–434) leads Table 2 by ΔT ≈ 0.26; Lethe's published
+// dam-break case (chaos-polymtl/lethe, examples/multiphysics/dam-break) shifts its simulated T
+// by 0.175; an interFoam run of this column is ≈ 10 % ahead (martin_moyce.h). The bounds
+// [0.15, 0.32] hold both published shifts with margin; a shift outside them would mean a
+// different front speed, not a release delay.
+// Tolerance: 4 % RMS, the issue's figure: above the experiment's own scatter (Table 2 against
+// its Fig. 3, PySPH's digitisation: up to 2.5 %). Slope ± 0.15: the issue's, about 11 % of it.
+// Fit window: the acceptance window of issue 4 (1 ≤ T ≤ 3, 11 stations), fixed before the fit.
+// Measured (3 December 2026): ΔT = 0.256, RMS 1.76 % after it (14.1 % without), slope 1.401
+// against the data's 1.319; 8 s on 2 busy cores.
+TEST(MartinMoyce, SurgeFrontMatchesTheExperimentAfterOneConstantDelay) {
+  const std::vector<mm::FrontSample> simulated = mm::simulateFront(20, 3.33 + mm::kFrameTime);
+  const double shift = bestShift(simulated);
+  const double rms = rmsRelativeError(simulated, shift);
+  const double slope = frontSlope(simulated, 1.43, 3.33);
+  const double measuredSlope = frontSlope(mm::kTabulatedFront, 1.43, 3.33);
+  std::printf(
+      "[ measured ] a/dx = 20: best delay %.3f, RMS relative error %.2f %% after it "
+      "(%.2f %% without), slope dZ/dT %.3f on 1.43 <= T <= 3.33 (measured slope %.3f)\n",
+      shift, 100.0 * rms, 100.0 * rmsRelativeError(simulated, 0.0), slope, measuredSlope);
+  EXPECT_GE(shift, 0.15);
+  EXPECT_LE(shift, 0.32);
+  EXPECT_LE(rms, 0.04);
+  EXPECT_NEAR(slope, 1.32, 0.15);
 }
 
 // Claim: a/Δx = 10 resolves the front, so the comparison above measures the model, not the grid:
