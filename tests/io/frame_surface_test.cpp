@@ -80,7 +80,8 @@ TEST(FrameSurface, CorruptBlockSizeIsAnInputError) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.file(), frame.string());
     EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
-
+  }
+}
 
 // Claim: a truncated or damaged frame is one InputError naming the file, never std::bad_alloc, a
 // crash or another exception: the frame cut at 40 lengths from 0 bytes to all but one, and with
