@@ -25,8 +25,8 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
-  requireIntactVdbHeader(path);  // OpenVDB trusts the lengths in a damaged header (vdb_header_check.h)
-  requireIntactVdbFile(path);    // and those of the surface grid's tree (vdb_file_check.h)
+  requireIntactVdbFile(path);    // OpenVDB trusts the lengths in the file (vdb_file_check.h)
+  requireIntactVdbHeader(path);  // and the delayed-load counts of the header (vdb_header_check.h)
   try {
     openvdb::io::File file(path.string());
     file.open(/*delayLoad=*/false);  // read in full now, in the order requireIntactVdbFile checked
