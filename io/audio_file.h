@@ -1,10 +1,12 @@
 // io/audio_file.h — WAV and FLAC through libsndfile: 32-bit float by default, 16/24-bit PCM with
-// TPDF dither on request, optional normalisation to a peak level, atomic output; and reading back.
+// TPDF dither on request, optional normalisation to a peak level, output by the rule of
+// output_file.h; and reading back.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace fluidsound::io {
@@ -33,11 +35,25 @@ struct AudioWriteReport {
   std::int64_t clippedSamples = 0;  ///< samples beyond full scale in a PCM file (clipped by the format)
 };
 
-/// @brief Infers the format from a file name: `.flac` → Flac, otherwise Wav.
-AudioFormat audioFormatFromPath(const std::filesystem::path& path);
+/// @brief The format of a file name's extension, any case: `.flac` → Flac, `.wav` → Wav, any other
+///        (or none) → nullopt: libsndfile is not asked to guess.
+std::optional<AudioFormat> audioFormatFromPath(const std::filesystem::path& path);
 
-/// @brief Writes audio atomically. FLAC has no float samples: it is written as 24-bit (or 16-bit)
-///        PCM. PCM output beyond full scale is clipped and counted in the report (never silently).
+/// The bytes of an audio file and what encoding did to the signal.
+struct EncodedAudio {
+  std::string bytes;
+  AudioWriteReport report;
+};
+
+/// @brief Encodes audio in memory, as writeAudio() would write it (`path` only names it in errors).
+/// @throws OutputError if libsndfile fails; std::invalid_argument on bad settings
+EncodedAudio encodeAudio(const std::filesystem::path& path, const AudioBuffer& audio,
+                         const AudioWriteSettings& settings);
+
+/// @brief Writes audio by the output rule (output_file.h): atomically onto a regular file or a new
+///        name, written through to a device, a FIFO or `-`. FLAC has no float samples: it is
+///        written as 24-bit (or 16-bit) PCM. PCM output beyond full scale is clipped and counted in
+///        the report (never silently).
 /// @throws OutputError if the file cannot be written; std::invalid_argument on bad settings
 AudioWriteReport writeAudio(const std::filesystem::path& path, const AudioBuffer& audio,
                             const AudioWriteSettings& settings);
