@@ -20,6 +20,7 @@ struct RunReport::Data {
 RunReport::RunReport(const std::string& command) : data_(std::make_unique<Data>()) {
   data_->json["format"] = "fluidsound.report/1";
   data_->json["command"] = command;
+  data_->json["complete"] = true;
   data_->json["settings"] = nlohmann::ordered_json::object();
   data_->json["stages"] = nlohmann::ordered_json::object();
   data_->json["results"] = nlohmann::ordered_json::object();
@@ -70,10 +71,17 @@ std::string versionText() {
          "  CLI11 " + CLI11_VERSION + "\n" + io::libraryVersions();
 }
 
-void RunReport::write(const std::filesystem::path& path) {
+void RunReport::markIncomplete(const std::string& interruptedAt) {
+  data_->json["complete"] = false;
+  data_->json["interrupted_at"] = interruptedAt;
+}
+
+std::string RunReport::text() {
   data_->json["peak_memory_bytes"] = peakMemoryBytes();
   data_->json["versions"] = versionText();
-  io::writeTextFile(path, data_->json.dump(2) + "\n");
+  return data_->json.dump(2) + "\n";
 }
+
+void RunReport::write(const std::filesystem::path& path) { io::writeTextFile(path, text()); }
 
 }  // namespace fluidsound::tools

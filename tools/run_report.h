@@ -25,7 +25,14 @@ class RunReport {
   /// Attaches a JSON document (text) under `key` of the results, e.g. a validation table.
   void resultJson(const std::string& key, const std::string& jsonText);
 
-  /// Adds peak memory and versions, then writes atomically.
+  /// `"complete": false` and where the command stopped (a signal); every report is complete
+  /// otherwise.
+  void markIncomplete(const std::string& interruptedAt);
+
+  /// Adds peak memory and versions and returns the document.
+  std::string text();
+
+  /// text(), written by the output rule (io/output_file.h).
   /// @throws io::OutputError
   void write(const std::filesystem::path& path);
 

@@ -14,6 +14,8 @@
 #include "io/audio_file.h"
 #include "io/bubble_track_file.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
+#include "io/output_file.h"
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
 #include "tools/progress_display.h"
@@ -24,10 +26,11 @@ namespace fluidsound::tools {
 CLI::App* addSynthCommand(CLI::App& app, SynthOptions& o) {
   CLI::App* c = app.add_subcommand("synth", "render bubble tracks (fluidsound.bubbles/1) to audio");
   c->add_option("bubbles", o.input, "bubble-track file (JSON)")->required();
-  c->add_option("-o,--output", o.output, "output audio file, .wav or .flac")->required();
+  c->add_option("-o,--output", o.output, "output audio file, .wav or .flac; - = standard output")
+      ->required();
   c->add_option("--rate", o.sampleRate, "sample rate in Hz (default: the file's sample_rate)")
       ->check(CLI::Range(8000.0, 768000.0));
-  c->add_option("--format", o.format, "wav or flac (default: from the output's extension)")
+  c->add_option("--format", o.format, "wav or flac (default: from the output's extension; WAV for -)")
       ->check(CLI::IsMember({"wav", "flac"}, CLI::ignore_case));
   c->add_option("--bits", o.bits, "bits per sample: 32 (float), 24 or 16 (PCM with TPDF dither)")
       ->check(CLI::IsMember({16, 24, 32}));
@@ -35,7 +38,7 @@ CLI::App* addSynthCommand(CLI::App& app, SynthOptions& o) {
       ->check(CLI::Range(-120.0, 0.0));
   c->add_option("--duration", o.duration, "length of the render in seconds")
       ->check(CLI::PositiveNumber);
-  c->add_option("--report", o.report, "run report (default: OUT with extension .report.json)");
+  c->add_option("--report", o.report, "run report (default: OUT.report.json; none for -, a device or a FIFO)");
   c->add_option("--spectrogram", o.spectrogram, "also draw the spectrogram to this PNG");
   addOscillatorModelOptions(*c, o.model);
   addCommonOptions(*c, o.common);
@@ -44,13 +47,46 @@ CLI::App* addSynthCommand(CLI::App& app, SynthOptions& o) {
 
 namespace {
 
-std::filesystem::path defaultReportPath(const std::filesystem::path& output) {
-  std::filesystem::path p = output;
-  return p.replace_extension(".report.json");
+/// OUT.report.json beside a file output (so out.wav and out.flac keep their own reports); none for
+/// a stream (`-`, a device, a FIFO): a report there would land in /dev or mix with the audio.
+std::string defaultReportPath(const std::string& output) {
+  if (io::resolveOutput(output).kind != io::OutputKind::Replace) return {};
+  return output + ".report.json";
+}
+
+/// The shown name of an output: "standard output" for `-`.
+std::string shownName(const std::string& path) {
+  return io::isStandardOutput(path) ? std::string("standard output") : path;
 }
 
 void note(const SynthOptions& o, const std::string& text) {
   if (!o.common.quiet) std::fprintf(stderr, "fluidsound: note: %s\n", text.c_str());
+}
+
+/// The settings and results of a render (docs/cli.md lists the fields); stage times are added by
+/// the caller.
+void addSynthResults(RunReport& report, const SynthOptions& o, const acoustics::SynthesisSettings& settings,
+                      const io::AudioWriteSettings& write, const acoustics::BubbleTrackSet& tracks,
+                      const acoustics::SynthesisReport& r, const io::AudioWriteReport& w,
+                     std::size_t channels) {
+  report.setting("input", o.input);
+  report.setting("output", o.output);
+  report.setting("format", write.format == io::AudioFormat::Flac ? "flac" : "wav");
+  report.setting("sample_rate", settings.sampleRate);
+  report.setting("bits", write.bitsPerSample);
+  report.setOscillatorModel(settings.model);
+  report.result("bubbles_in_file", static_cast<double>(tracks.bubbles.size()));
+  report.result("bubbles_rendered", static_cast<double>(r.bubblesRendered));
+  report.result("bubbles_above_nyquist", static_cast<double>(r.bubblesAboveNyquist));
+  report.result("bubbles_after_end", static_cast<double>(r.bubblesSilent));
+  report.result("depths_clamped", static_cast<double>(r.depthsClamped));
+  report.result("oscillator_samples", static_cast<double>(r.oscillatorSamples));
+  report.result("duration_seconds", static_cast<double>(r.frames) / settings.sampleRate);
+  report.result("channels", static_cast<double>(channels));
+  report.result("peak_pascals", r.peakPascals);
+  report.result("gain", w.gain);
+  report.result("output_peak_dbfs", w.outputPeakDbfs);
+  report.result("clipped_samples", static_cast<double>(w.clippedSamples));
 }
 
 }  // namespace
@@ -58,11 +94,15 @@ void note(const SynthOptions& o, const std::string& text) {
 int runSynthCommand(const SynthOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  const std::filesystem::path output = o.output;
-  const std::filesystem::path reportPath = o.report.empty() ? defaultReportPath(output) : std::filesystem::path(o.report);
-  // Fail before the render, not after it, when an output cannot be written.
-  io::requireWritableFolder(output);
-  io::requireWritableFolder(reportPath);
+  // Everything that can be refused is refused before the render: formats, names, outputs.
+  const AudioLayout layout = audioLayout(o.output, o.format, o.bits);
+  const std::string reportPath = o.report.empty() ? defaultReportPath(o.output) : o.report;
+  requireDistinctFiles({{"bubbles", o.input, true},
+                        {"--output", o.output},
+                        {"--report", reportPath},
+                        {"--spectrogram", o.spectrogram}});
+  io::requireWritableFolder(o.output);
+  if (!reportPath.empty()) io::requireWritableFolder(reportPath);
   if (!o.spectrogram.empty()) io::requireWritableFolder(o.spectrogram);
 
   std::error_code sizeError;
@@ -85,7 +125,10 @@ int runSynthCommand(const SynthOptions& o) {
     const double audioSeconds = settings.duration.value_or(0.0);
     ProgressDisplay progress("synth", audioSeconds > 0 ? audioSeconds : 1.0,
                              audioSeconds > 0 ? "s audio" : "", o.common.quiet);
-    result = acoustics::synthesize(tracks, settings, [&](double f) { progress.update(f); });
+    result = acoustics::synthesize(tracks, settings, [&](double f) {
+      io::throwIfInterrupted("synth, " + std::to_string(std::lround(f * 100)) + " % rendered");
+      progress.update(f);
+    });
   }
   const auto t2 = Clock::now();
   const acoustics::SynthesisReport& r = result.report;
@@ -97,52 +140,45 @@ int runSynthCommand(const SynthOptions& o) {
 
   io::AudioBuffer audio{settings.sampleRate, std::move(result.channels)};
   io::AudioWriteSettings write;
-  write.format = o.format.empty() ? io::audioFormatFromPath(output)
-                                  : (o.format == "flac" || o.format == "FLAC" ? io::AudioFormat::Flac
-                                                                              : io::AudioFormat::Wav);
-  write.bitsPerSample = o.bits != 0 ? o.bits : (write.format == io::AudioFormat::Flac ? 24 : 32);
+  write.format = layout.format;
+  write.bitsPerSample = layout.bits;
   write.normalizePeakDbfs = o.normalizeDbfs;
-  const io::AudioWriteReport w = io::writeAudio(output, audio, write);
+  // All outputs are encoded first, then written together: a failure leaves none of them.
+  io::EncodedAudio encoded = io::encodeAudio(o.output, audio, write);
+  const io::AudioWriteReport w = encoded.report;
+  io::OutputBatch outputs;
+  outputs.add(o.output, std::move(encoded.bytes));
+  if (!o.spectrogram.empty()) {
+    const std::string title = io::isStandardOutput(o.output) ? std::string("standard output")
+                                                             : std::filesystem::path(o.output).filename().string();
+    outputs.add(o.spectrogram, io::encodeSpectrogramPng(audio, {}, title));
+  }
+  const auto t3 = Clock::now();
+  if (!reportPath.empty()) {
+    RunReport report("synth");
+    addSynthResults(report, o, settings, write, tracks, r, w, audio.channels.size());
+    const double synthSeconds = std::chrono::duration<double>(t2 - t1).count();
+    report.stageSeconds("read", std::chrono::duration<double>(t1 - t0).count());
+    report.stageSeconds("synthesis", synthSeconds);
+    report.stageSeconds("write", std::chrono::duration<double>(t3 - t2).count());
+    report.result("oscillator_samples_per_second",
+                  synthSeconds > 0 ? static_cast<double>(r.oscillatorSamples) / synthSeconds : 0.0);
+    outputs.add(reportPath, report.text());
+  }
+  io::throwIfInterrupted("synth, before writing");
+  outputs.commit();
+
   if (w.clippedSamples > 0)
     std::fprintf(stderr, "fluidsound: warning: %lld sample(s) clipped at full scale; use --normalize\n",
                  static_cast<long long>(w.clippedSamples));
   else if (w.outputPeakDbfs > 0.0 && !o.common.quiet)
     std::fprintf(stderr, "fluidsound: warning: peak %.3g Pa is %+.1f dBFS in a float file; players "
                  "will clip it: use --normalize\n", w.inputPeak, w.outputPeakDbfs);
-  if (!o.spectrogram.empty()) io::writeSpectrogramPng(o.spectrogram, audio, {}, output.filename().string());
-  const auto t3 = Clock::now();
-
-  RunReport report("synth");
-  report.setting("input", o.input);
-  report.setting("output", o.output);
-  report.setting("sample_rate", settings.sampleRate);
-  report.setting("bits", write.bitsPerSample);
-  report.setOscillatorModel(settings.model);
-  report.stageSeconds("read", std::chrono::duration<double>(t1 - t0).count());
-  report.stageSeconds("synthesis", std::chrono::duration<double>(t2 - t1).count());
-  report.stageSeconds("write", std::chrono::duration<double>(t3 - t2).count());
-  report.result("bubbles_in_file", static_cast<double>(tracks.bubbles.size()));
-  report.result("bubbles_rendered", static_cast<double>(r.bubblesRendered));
-  report.result("bubbles_above_nyquist", static_cast<double>(r.bubblesAboveNyquist));
-  report.result("bubbles_after_end", static_cast<double>(r.bubblesSilent));
-  report.result("depths_clamped", static_cast<double>(r.depthsClamped));
-  report.result("oscillator_samples", static_cast<double>(r.oscillatorSamples));
-  report.result("duration_seconds", static_cast<double>(r.frames) / settings.sampleRate);
-  report.result("channels", static_cast<double>(audio.channels.size()));
-  report.result("peak_pascals", r.peakPascals);
-  report.result("gain", w.gain);
-  report.result("output_peak_dbfs", w.outputPeakDbfs);
-  report.result("clipped_samples", static_cast<double>(w.clippedSamples));
-  const double synthSeconds = std::chrono::duration<double>(t2 - t1).count();
-  report.result("oscillator_samples_per_second",
-                synthSeconds > 0 ? static_cast<double>(r.oscillatorSamples) / synthSeconds : 0.0);
-  report.write(reportPath);
-
   if (!o.common.quiet)
     std::fprintf(stderr, "fluidsound: wrote %s (%zu ch, %.2f s, peak %.3g Pa) in %.2f s\n",
-                 output.string().c_str(), audio.channels.size(),
+                 shownName(o.output).c_str(), audio.channels.size(),
                  static_cast<double>(r.frames) / settings.sampleRate, r.peakPascals,
-                 std::chrono::duration<double>(t3 - t0).count());
+                 std::chrono::duration<double>(Clock::now() - t0).count());
   return kExitSuccess;
 }
 
