@@ -21,6 +21,7 @@
 #include "io/audio_file.h"
 #include "io/bubble_track_file.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
 #include "tools/cell_option.h"
@@ -142,9 +143,21 @@ Json spectrumSummary(const acoustics::BubbleTrackSet& tracks, const std::filesys
   }
   return {{"band_hz", {band.low, band.high}}, {"channels", channels}};
 }
-}  // namespace
 
-int runRunCommand(const RunOptions& o) {
+/// After a signal in a stage: OUTDIR/report.json says `"complete": false` and where the run
+/// stopped (simulate marks its own; a later stage marks the report it started from).
+io::Interrupted markRunIncomplete(const std::filesystem::path& out, const io::Interrupted& signal) {
+  if (!signal.aftermath().empty()) return signal;
+  const std::filesystem::path path = out / "report.json";
+  Json report = Json::parse(fileBytes(path), nullptr, false);
+  if (!report.is_object()) report = {{"format", "fluidsound.report/1"}, {"command", "run"}};
+  report["complete"] = false;
+  report["interrupted_at"] = signal.where();
+  io::writeTextFile(path, report.dump(2) + "\n");
+  return io::Interrupted(signal.signalNumber(), signal.where(), path.string() + " marked incomplete");
+}
+
+int runStages(const RunOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   // Bad input (the scene, --cell) stops here, before any output.
@@ -218,11 +231,23 @@ int runRunCommand(const RunOptions& o) {
   }
   run["spectrum"] = spectrumSummary(tracks, out / audioName(scene.file));
   report["run"] = run;
+  report["complete"] = true;  // also over the mark an interrupted earlier run left
+  report.erase("interrupted_at");
+  io::throwIfInterrupted("run, before writing report.json");
   io::writeTextFile(out / "report.json", report.dump(2) + "\n");
   if (!o.common.quiet)
     std::fprintf(stderr, "run: %zu bubbles -> %s, spectrogram.png, report.json (%.1f s)\n", tracks.bubbles.size(),
                  (out / audioName(scene.file)).string().c_str(), run["seconds"].get<double>());
   return kExitSuccess;
+}
+}  // namespace
+
+int runRunCommand(const RunOptions& o) {
+  try {
+    return runStages(o);
+  } catch (const io::Interrupted& signal) {
+    throw markRunIncomplete(o.output, signal);
+  }
 }
 
 }  // namespace fluidsound::tools
