@@ -79,7 +79,9 @@ void RunReport::markIncomplete(const std::string& interruptedAt) {
 std::string RunReport::text() {
   data_->json["peak_memory_bytes"] = peakMemoryBytes();
   data_->json["versions"] = versionText();
-  return data_->json.dump(2) + "\n";
+  // A file name need not be UTF-8 (Linux names are bytes); JSON must be: such bytes are written
+  // as U+FFFD, so the report still names the output as well as it can, and the output is written.
+  return data_->json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 void RunReport::write(const std::filesystem::path& path) { io::writeTextFile(path, text()); }

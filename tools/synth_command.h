@@ -13,13 +13,13 @@ namespace fluidsound::tools {
 struct SynthOptions {
   CommonOptions common;
   std::string input;                 ///< bubble-track file
-  std::string output;                ///< .wav or .flac
+  std::string output;                ///< .wav or .flac, - (stdout), a device or a FIFO
   std::optional<double> sampleRate;  ///< Hz; default: the file's sample_rate
   std::string format;                ///< wav | flac; default from the output's extension
   int bits = 0;                      ///< 16 | 24 | 32; default 32 (WAV), 24 (FLAC)
   std::optional<double> normalizeDbfs;
   std::optional<double> duration;    ///< s; default: the file's, else until all have decayed
-  std::string report;                ///< report path; default OUT with extension .report.json
+  std::string report;                ///< report path; default OUT.report.json (none for a stream)
   std::string spectrogram;           ///< also draw this PNG, if given
   acoustics::OscillatorModel model;
 };

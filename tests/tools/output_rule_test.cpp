@@ -173,5 +173,15 @@ TEST_F(OutputRule, WavAndFlacOfOneNameKeepTheirOwnReports) {
   EXPECT_NE(fileBytes(at("out.flac.report.json")).find("\"complete\": true"), std::string::npos);
 }
 
+TEST_F(OutputRule, NonUtf8OutputNameIsWrittenWithItsReport) {
+  // Linux file names are bytes; the report is JSON (UTF-8): the name's invalid byte becomes U+FFFD
+  // there, and the WAV is never left without its report.
+  const std::string name = "\xff.wav";
+  const CommandOutcome r = synth({"-o", at(name).string()});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(fileBytes(at(name)).substr(0, 4), "RIFF");
+  EXPECT_NE(fileBytes(at(name + ".report.json")).find("\xef\xbf\xbd.wav"), std::string::npos);  // U+FFFD
+}
+
 }  // namespace
 }  // namespace fluidsound::test
