@@ -56,6 +56,22 @@ void requireWritableFolderOf(const fs::path& shown, const fs::path& file) {
                       "folder '" + folder.string() + "' is not writable: " + errnoText(errno));
 }
 
+/// True if following `path`'s links passes through /proc (/dev/stdout → /proc/self/fd/1): such a
+/// link names an open file of a process, not a place, so it is written through even when it
+/// ends at a regular file (a shell's `> file`), and nothing is made beside it.
+bool linksThroughProc(const fs::path& path) {
+  constexpr int kMaxLinks = 40;  // Linux's own limit (MAXSYMLINKS)
+  fs::path at = path;
+  std::error_code ec;
+  for (int hop = 0; hop < kMaxLinks && fs::is_symlink(at, ec); ++hop) {
+    const fs::path next = fs::read_symlink(at, ec);
+    if (ec) return false;
+    at = next.is_absolute() ? next : at.parent_path() / next;
+    if (at.lexically_normal().string().starts_with("/proc/")) return true;
+  }
+  return false;
+}
+
 /// Writes all of `bytes` to `descriptor`, resuming after partial writes and EINTR.
 /// @return 0, or the errno of the failed write
 int writeAll(int descriptor, std::string_view bytes) {
@@ -114,7 +130,9 @@ OutputTarget resolveOutput(const fs::path& path) {
     throw cannotWrite(path, "it is a symbolic link to nothing (its target is not made)");
   if (const std::string refused = refusedKind(followed.type()); !refused.empty())
     throw cannotWrite(path, refused);
-  if (followed.type() == fs::file_type::character || followed.type() == fs::file_type::fifo) {
+  const bool stream = followed.type() == fs::file_type::character ||
+                      followed.type() == fs::file_type::fifo || (link && linksThroughProc(path));
+  if (stream) {
     if (::access(path.c_str(), W_OK) != 0) throw cannotWrite(path, errnoText(errno));
     return {OutputKind::WriteThrough, path, path};
   }

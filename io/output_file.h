@@ -1,9 +1,10 @@
 // io/output_file.h — the one rule of every output of every command (docs/cli.md, "Outputs"):
 // a regular file or a new name is replaced atomically (temporary file beside it, then rename); a
 // symlink is followed and its target replaced the same way if that is a regular file (the link
-// stays); a character device, a FIFO or `-` (standard output) is written through (opened and
-// written, no temporary, no rename); anything else (a folder, a socket, a block device, a link
-// to nothing) is refused with one line before any work.
+// stays); a character device, a FIFO, `-` (standard output) or a link through /proc
+// (/dev/stdout, /dev/fd/N) is written through (opened and written, no temporary, no rename);
+// anything else (a folder, a socket, a block device, a link to nothing) is refused with one line
+// before any work.
 #pragma once
 
 #include <filesystem>

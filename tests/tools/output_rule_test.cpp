@@ -106,6 +106,18 @@ TEST_F(OutputRule, DashWritesTheAudioToStandardOutputAndNotesToStderr) {
   EXPECT_EQ(fileBytes(at("stdout.flac")), fileBytes(at("file.flac")));
 }
 
+TEST_F(OutputRule, LinkThroughProcIsWrittenThroughLikeDevStdout) {
+  // /dev/stdout is a link to /proc/self/fd/1; the same link made here (never the system's /dev):
+  // with stdout a regular file it must still be written through, with no report made beside it.
+  fs::create_symlink("/proc/self/fd/1", at("stdout"));
+  SpawnedFluidsound process({"synth", input_.string(), "-o", at("stdout").string(), "-q"}, at("captured.wav"),
+                            at("stderr.txt"));
+  EXPECT_EQ(process.wait(), 0) << process.err();
+  EXPECT_EQ(fileBytes(at("captured.wav")).substr(0, 4), "RIFF");
+  EXPECT_TRUE(fs::is_symlink(at("stdout")));
+  expectEntries({"captured.wav", "in.json", "stderr.txt", "stdout"});
+}
+
 TEST_F(OutputRule, SymlinkKeepsStandingAndItsTargetIsReplaced) {
   std::ofstream(at("target.wav")) << "old";
   fs::create_symlink("target.wav", at("link.wav"));
