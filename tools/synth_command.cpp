@@ -63,6 +63,31 @@ void note(const SynthOptions& o, const std::string& text) {
   if (!o.common.quiet) std::fprintf(stderr, "fluidsound: note: %s\n", text.c_str());
 }
 
+/// Refuses, before the render, every output that cannot be written or names an input or another
+/// output (the audio format is checked by audioLayout()).
+/// @return the report's path; empty: no report (a stream output without --report)
+std::string checkedReportPath(const SynthOptions& o) {
+  const std::string reportPath = o.report.empty() ? defaultReportPath(o.output) : o.report;
+  requireDistinctFiles({{"bubbles", o.input, true},
+                        {"--output", o.output},
+                        {"--report", reportPath},
+                        {"--spectrogram", o.spectrogram}});
+  io::requireWritableFolder(o.output);
+  if (!reportPath.empty()) io::requireWritableFolder(reportPath);
+  if (!o.spectrogram.empty()) io::requireWritableFolder(o.spectrogram);
+  return reportPath;
+}
+
+/// Clipped PCM samples, or a float file whose peak players will clip.
+void warnAboutLevel(const SynthOptions& o, const io::AudioWriteReport& w) {
+  if (w.clippedSamples > 0)
+    std::fprintf(stderr, "fluidsound: warning: %lld sample(s) clipped at full scale; use --normalize\n",
+                 static_cast<long long>(w.clippedSamples));
+  else if (w.outputPeakDbfs > 0.0 && !o.common.quiet)
+    std::fprintf(stderr, "fluidsound: warning: peak %.3g Pa is %+.1f dBFS in a float file; players "
+                 "will clip it: use --normalize\n", w.inputPeak, w.outputPeakDbfs);
+}
+
 /// The settings and results of a render (docs/cli.md lists the fields); stage times are added by
 /// the caller.
 void addSynthResults(RunReport& report, const SynthOptions& o, const acoustics::SynthesisSettings& settings,
@@ -94,16 +119,8 @@ void addSynthResults(RunReport& report, const SynthOptions& o, const acoustics::
 int runSynthCommand(const SynthOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  // Everything that can be refused is refused before the render: formats, names, outputs.
   const AudioLayout layout = audioLayout(o.output, o.format, o.bits);
-  const std::string reportPath = o.report.empty() ? defaultReportPath(o.output) : o.report;
-  requireDistinctFiles({{"bubbles", o.input, true},
-                        {"--output", o.output},
-                        {"--report", reportPath},
-                        {"--spectrogram", o.spectrogram}});
-  io::requireWritableFolder(o.output);
-  if (!reportPath.empty()) io::requireWritableFolder(reportPath);
-  if (!o.spectrogram.empty()) io::requireWritableFolder(o.spectrogram);
+  const std::string reportPath = checkedReportPath(o);
 
   std::error_code sizeError;
   const auto inputBytes = std::filesystem::file_size(o.input, sizeError);
@@ -168,12 +185,7 @@ int runSynthCommand(const SynthOptions& o) {
   io::throwIfInterrupted("synth, before writing");
   outputs.commit();
 
-  if (w.clippedSamples > 0)
-    std::fprintf(stderr, "fluidsound: warning: %lld sample(s) clipped at full scale; use --normalize\n",
-                 static_cast<long long>(w.clippedSamples));
-  else if (w.outputPeakDbfs > 0.0 && !o.common.quiet)
-    std::fprintf(stderr, "fluidsound: warning: peak %.3g Pa is %+.1f dBFS in a float file; players "
-                 "will clip it: use --normalize\n", w.inputPeak, w.outputPeakDbfs);
+  warnAboutLevel(o, w);
   if (!o.common.quiet)
     std::fprintf(stderr, "fluidsound: wrote %s (%zu ch, %.2f s, peak %.3g Pa) in %.2f s\n",
                  shownName(o.output).c_str(), audio.channels.size(),
