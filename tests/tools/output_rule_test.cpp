@@ -104,6 +104,9 @@ TEST_F(OutputRule, DashWritesTheAudioToStandardOutputAndNotesToStderr) {
                          at("stderr.txt"));
   EXPECT_EQ(flac.wait(), 0) << flac.err();
   EXPECT_EQ(fileBytes(at("stdout.flac")), fileBytes(at("file.flac")));
+  SpawnedFluidsound png({"spectrogram", at("file.flac").string(), "-o", "-", "-q"}, at("stdout.png"), at("stderr.txt"));
+  EXPECT_EQ(png.wait(), 0) << png.err();
+  EXPECT_EQ(fileBytes(at("stdout.png")).substr(0, 8), "\x89PNG\r\n\x1a\n");  // the PNG signature
 }
 
 TEST_F(OutputRule, LinkThroughProcIsWrittenThroughLikeDevStdout) {
