@@ -1,6 +1,7 @@
-// tests/tools/interruption_test.cpp — SIGINT and SIGTERM sent to a running `fluidsound simulate`
-// and `run`: one line naming the signal and the frame, exit 128 + signal, no temporary file, no
-// bubbles.json, and a report.json that says `"complete": false` (docs/cli.md, "Signals").
+// tests/tools/interruption_test.cpp — SIGINT and SIGTERM sent to a running `fluidsound simulate`,
+// `run` and `synth`: one line naming the signal and where, exit 128 + signal, no temporary file,
+// no bubbles.json (no audio for synth), and for simulate and run a report.json that says
+// `"complete": false` (docs/cli.md, "Signals").
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -10,6 +11,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "support/spawned_command.h"
 #include "support/special_files.h"
@@ -118,6 +121,29 @@ TEST(Interruption, SecondSignalStillLeavesNoTemporary) {
   EXPECT_NE(lastLine(process.err()).find("interrupted"), std::string::npos) << process.err();
   EXPECT_EQ(hiddenFiles(folder.path() / "out"), std::vector<std::string>{});
   EXPECT_FALSE(fs::exists(folder.path() / "out" / "bubbles.json"));
+}
+
+TEST(Interruption, SigtermEndsSynthWithNothingWritten) {
+  // 100 000 bubbles over 200 s of stereo: about 3 s of rendering on one thread, so a signal
+  // 0.3 s in always comes while it runs (reading the file takes about 0.1 s).
+  TempFolder folder;
+  const fs::path bubbles = folder.path() / "many.json";
+  {
+    std::ofstream out(bubbles);
+    out << R"({"format": "fluidsound.bubbles/1", "listeners": ["l", "r"], "duration": 200, "bubbles": [)";
+    for (int i = 0; i < 100000; ++i)
+      out << (i ? "," : "") << R"({"radius": )" << 0.0005 + 0.002 * (i % 97) / 97.0 << R"(, "birth": )" << i * 0.002
+          << "}";
+    out << "]}";
+  }
+  SpawnedFluidsound process({"synth", bubbles.string(), "-o", (folder.path() / "o.wav").string(), "--spectrogram",
+                             (folder.path() / "o.png").string(), "--threads", "1"},
+                            folder.path() / "stdout.txt", folder.path() / "stderr.txt");
+  std::this_thread::sleep_for(300ms);
+  process.signal(SIGTERM);
+  EXPECT_EQ(process.wait(), 143) << process.err();
+  EXPECT_TRUE(lastLine(process.err()).starts_with("fluidsound: interrupted (SIGTERM) at synth")) << process.err();
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"many.json", "stderr.txt", "stdout.txt"}));
 }
 
 }  // namespace
