@@ -5,12 +5,15 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <system_error>
+#include <thread>
 #include <utility>
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
 
 namespace fluidsound::io {
 namespace {
@@ -86,6 +89,25 @@ int writeAll(int descriptor, std::string_view bytes) {
   return 0;
 }
 
+/// Opens a device or a FIFO for writing. No O_CREAT, no O_TRUNC: it is written, never made or
+/// changed. A FIFO without a reader would block open() (restarted after a signal), so it is opened
+/// without blocking and retried every 20 ms until a reader comes or a signal ends the command.
+int openForWritingThrough(const OutputTarget& target) {
+  constexpr auto kReaderPoll = std::chrono::milliseconds(20);
+  while (true) {
+    const int descriptor =
+        ::open(target.file.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if (descriptor >= 0) {
+      ::fcntl(descriptor, F_SETFL,
+              ::fcntl(descriptor, F_GETFL) & ~O_NONBLOCK);  // then block as usual
+      return descriptor;
+    }
+    if (errno != ENXIO && errno != EINTR) throw cannotWrite(target.shown, errnoText(errno));
+    throwIfInterrupted("waiting for a reader of " + target.shown.string());
+    std::this_thread::sleep_for(kReaderPoll);
+  }
+}
+
 void writeThrough(const OutputTarget& target, std::string_view bytes) {
   if (target.kind == OutputKind::StandardOutput) {
     std::fflush(stdout);  // nothing the program printed may come after the bytes
@@ -93,12 +115,7 @@ void writeThrough(const OutputTarget& target, std::string_view bytes) {
       throw OutputError("standard output: cannot write: " + errnoText(error));
     return;
   }
-  // No O_CREAT, no O_TRUNC: the device or FIFO is written, never made or changed.
-  int descriptor = -1;
-  do {
-    descriptor = ::open(target.file.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-  } while (descriptor < 0 && errno == EINTR);
-  if (descriptor < 0) throw cannotWrite(target.shown, errnoText(errno));
+  const int descriptor = openForWritingThrough(target);
   const int writeError = writeAll(descriptor, bytes);
   const int closeError = ::close(descriptor) == 0 ? 0 : errno;
   if (writeError != 0 || closeError != 0)

@@ -146,5 +146,22 @@ TEST(Interruption, SigtermEndsSynthWithNothingWritten) {
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"many.json", "stderr.txt", "stdout.txt"}));
 }
 
+TEST(Interruption, SigintEndsAWaitForAFifoReader) {
+  // A FIFO nobody reads: the write waits for a reader, and the first signal still ends it.
+  TempFolder folder;
+  const fs::path bubbles = folder.path() / "in.json", fifo = folder.path() / "pipe";
+  std::ofstream(bubbles) << R"({"format": "fluidsound.bubbles/1", "listeners": ["l"], "bubbles": [
+    {"radius": 0.001, "birth": 0.01}]})";
+  ASSERT_TRUE(makeFifo(fifo));
+  SpawnedFluidsound process({"synth", bubbles.string(), "-o", fifo.string(), "-q"}, folder.path() / "stdout.txt",
+                            folder.path() / "stderr.txt");
+  std::this_thread::sleep_for(300ms);
+  process.signal(SIGINT);
+  EXPECT_EQ(process.wait(), 130) << process.err();
+  EXPECT_EQ(lastLine(process.err()), "fluidsound: interrupted (SIGINT) at waiting for a reader of " + fifo.string());
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"in.json", "pipe", "stderr.txt", "stdout.txt"}));
+}
+
 }  // namespace
 }  // namespace fluidsound::test
