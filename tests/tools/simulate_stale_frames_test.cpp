@@ -28,7 +28,7 @@ std::string readText(const fs::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-/// OUTDIR as a 60-frame run with --ply left it (placeholder contents: only the names matter).
+/// OUTDIR as a 60-frame run with --ply left it (dummy contents: only the names matter).
 void writeSixtyFrameRun(const fs::path& out) {
   fs::create_directories(out / "frames");
   for (int f = 0; f <= 60; ++f) {
