@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "io/input_error.h"
+#include "io/output_file.h"
 
 namespace fluidsound::io {
 namespace {
@@ -58,20 +59,16 @@ std::string hex(std::uint64_t value) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
-  if (target_.filename().empty() || target_.filename() == "." || target_.filename() == "..") {
-    throw cannotWrite(target_, "not a file name");
-  }
+AtomicFile::AtomicFile(fs::path target) : shown_(std::move(target)) {
+  // The output rule (output_file.h): only a regular file or a new name is replaced; a symlink's
+  // regular target is replaced in its own folder and the link stays.
+  const OutputTarget resolved = resolveOutput(shown_);
+  if (resolved.kind != OutputKind::Replace)
+    throw cannotWrite(shown_,
+                      "a device, a FIFO or standard output is written through, not replaced");
+  target_ = resolved.file;
   const fs::path folder = target_.parent_path();
   const fs::path shownFolder = folder.empty() ? fs::path(".") : folder;
-  std::error_code ec;
-  if (!fs::exists(shownFolder, ec)) {
-    throw cannotWrite(target_, "folder '" + shownFolder.string() + "' does not exist");
-  }
-  if (!fs::is_directory(shownFolder, ec)) {
-    throw cannotWrite(target_, "'" + shownFolder.string() + "' is not a folder");
-  }
-  if (fs::is_directory(target_, ec)) throw cannotWrite(target_, "it is a folder");
 
   // Creating the temporary file now (exclusively, "x") is the real test that the folder is
   // writable, and reserves the name. fopen gives the usual permissions (0666 minus umask).
@@ -83,15 +80,16 @@ AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
     if (std::FILE* file = std::fopen(candidate.c_str(), "wx")) {
       std::fclose(file);
       temporary_ = candidate;
+      registration_ = std::make_unique<TemporaryRegistration>(temporary_);
       return;
     }
     const int error = errno;
     if (error != EEXIST) {
-      throw cannotWrite(target_, "cannot create a file in folder '" + shownFolder.string() +
-                                     "': " + std::generic_category().message(error));
+      throw cannotWrite(shown_, "cannot create a file in folder '" + shownFolder.string() +
+                                    "': " + std::generic_category().message(error));
     }
   }
-  throw cannotWrite(target_, "no unused temporary name in folder '" + shownFolder.string() + "'");
+  throw cannotWrite(shown_, "no unused temporary name in folder '" + shownFolder.string() + "'");
 }
 
 AtomicFile::~AtomicFile() {
@@ -99,13 +97,14 @@ AtomicFile::~AtomicFile() {
     std::error_code ignored;  // a destructor never throws; a leftover temporary is hidden (".")
     fs::remove(temporary_, ignored);
   }
+  // registration_ ends after the removal, so a second signal in between still removes it.
 }
 
 void AtomicFile::commit() {
   if (committed_) return;
   std::error_code ec;
   fs::rename(temporary_, target_, ec);
-  if (ec) throw cannotWrite(target_, "renaming the temporary file failed: " + ec.message());
+  if (ec) throw cannotWrite(shown_, "renaming the temporary file failed: " + ec.message());
   committed_ = true;
 }
 

@@ -1,6 +1,7 @@
 // io/audio_file.cpp — WAV/FLAC through libsndfile (docs/audio.md): float or TPDF-dithered PCM,
 // optional peak or loudness normalisation, clipping counted, loudness of what was written,
-// channels named and unpositioned, atomic output; reading back as floats.
+// channels named and unpositioned, encoded in memory and written by the output rule
+// (output_file.h); reading back as floats.
 #include "io/audio_file.h"
 
 #include <sndfile.h>
@@ -10,19 +11,21 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "acoustics/loudness.h"
-#include "io/atomic_file.h"
 #include "io/channel_layout.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
+#include "io/output_file.h"
 
 namespace fluidsound::io {
 namespace {
@@ -166,32 +169,74 @@ class SoundFile {
   SNDFILE* file_;
 };
 
-/// Commits a closed file, first marking 3 or more channels as having no speaker positions
-/// (channel_layout.h): in place for WAV, through a second temporary file for FLAC.
-void commitWithoutSpeakerPositions(AtomicFile& output, AudioFormat format, std::size_t channels) {
-  if (channels < kFirstUnpositionedChannelCount) {
-    output.commit();
-  } else if (format == AudioFormat::Wav) {
-    clearWaveSpeakerMask(output.temporaryPath());
-    output.commit();
-  } else {
-    AtomicFile labelled(output.targetPath());
-    copyFlacWithoutSpeakerMask(output.temporaryPath(), labelled.temporaryPath());
-    labelled.commit();  // `output`'s temporary goes with its destructor
+/// A file in memory for libsndfile (sf_open_virtual): WAV's header is patched after the samples,
+/// which needs a seekable file; the bytes are then written by the output rule, so a FIFO, a
+/// device or standard output gets the same bytes as a regular file.
+struct MemoryFile {
+  std::string bytes;
+  sf_count_t position = 0;
+
+  static MemoryFile& of(void* user) { return *static_cast<MemoryFile*>(user); }
+  static sf_count_t length(void* user) { return static_cast<sf_count_t>(of(user).bytes.size()); }
+  static sf_count_t seek(sf_count_t offset, int whence, void* user) {
+    MemoryFile& file = of(user);
+    const sf_count_t base = whence == SEEK_CUR   ? file.position
+                            : whence == SEEK_END ? static_cast<sf_count_t>(file.bytes.size())
+                                                 : 0;
+    if (base + offset < 0) return -1;
+    file.position = base + offset;
+    return file.position;
   }
+  static sf_count_t read(void* out, sf_count_t count, void* user) {
+    MemoryFile& file = of(user);
+    const auto size = static_cast<sf_count_t>(file.bytes.size());
+    const sf_count_t available = std::max<sf_count_t>(0, std::min(count, size - file.position));
+    if (available > 0)
+      std::memcpy(out, file.bytes.data() + file.position, static_cast<std::size_t>(available));
+    file.position += available;
+    return available;
+  }
+  static sf_count_t write(const void* in, sf_count_t count, void* user) {
+    MemoryFile& file = of(user);
+    const auto end = static_cast<std::size_t>(file.position + count);
+    if (end > file.bytes.size()) file.bytes.resize(end);
+    std::memcpy(file.bytes.data() + file.position, in, static_cast<std::size_t>(count));
+    file.position += count;
+    return count;
+  }
+  static sf_count_t tell(void* user) { return of(user).position; }
+};
+
+/// Marks 3 or more channels of encoded bytes as having no speaker positions (channel_layout.h).
+void removeSpeakerPositions(std::string& bytes, const fs::path& path, int format,
+                            std::size_t channels) {
+  if (channels < kFirstUnpositionedChannelCount) return;
+  if ((format & SF_FORMAT_TYPEMASK) == SF_FORMAT_FLAC)
+    bytes = flacWithoutSpeakerMask(bytes, path);
+  else
+    clearWaveSpeakerMask(bytes, path);
 }
 
 }  // namespace
 
-AudioFormat audioFormatFromPath(const fs::path& path) {
+std::optional<AudioFormat> audioFormatFromPath(const fs::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".flac" ? AudioFormat::Flac : AudioFormat::Wav;
+  if (extension == ".flac") return AudioFormat::Flac;
+  if (extension == ".wav") return AudioFormat::Wav;
+  return std::nullopt;
 }
 
 AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
                             const AudioWriteSettings& settings) {
+  EncodedAudio encoded = encodeAudio(path, audio, settings);
+  writeOutputFile(path, encoded.bytes);
+  return encoded.report;
+}
+
+EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
+                         const AudioWriteSettings& settings) {
   // Validate everything before touching the disk.
   const SampleLayout layout = sampleLayout(path, settings, audio.channels.size());
   const double rate = audio.sampleRate;
@@ -217,8 +262,10 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
                           std::to_string(info.samplerate) + " Hz");
   }
 
-  AtomicFile output(path);
-  SoundFile file(sf_open(output.temporaryPath().c_str(), SFM_WRITE, &info));
+  MemoryFile memory;
+  SF_VIRTUAL_IO io{MemoryFile::length, MemoryFile::seek, MemoryFile::read, MemoryFile::write,
+                   MemoryFile::tell};
+  SoundFile file(sf_open_virtual(&io, SFM_WRITE, &info, &memory));
   if (file.get() == nullptr) {
     throw OutputError(path.string() + ": cannot write: " + sf_strerror(nullptr));
   }
@@ -290,10 +337,10 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
   if (const int code = file.close(); code != 0) {
     throw OutputError(path.string() + ": cannot write: " + sf_error_number(code));
   }
-  commitWithoutSpeakerPositions(output, settings.format, channels);
+  removeSpeakerPositions(memory.bytes, path, layout.format, channels);
   report.outputPeakDbfs = decibelsFromAmplitude(outputPeak);
   report.written = meter.measurement();
-  return report;
+  return {std::move(memory.bytes), report};
 }
 
 AudioBuffer readAudio(const fs::path& path) {

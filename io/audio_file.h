@@ -1,6 +1,7 @@
 // io/audio_file.h — WAV and FLAC through libsndfile: 32-bit float by default, 16/24-bit PCM with
 // TPDF dither on request, optional normalisation to a peak level or to a loudness target under a
-// true-peak ceiling, channels named and without speaker positions, atomic output; reading back.
+// true-peak ceiling, channels named and without speaker positions, output by the rule of
+// output_file.h; and reading back.
 #pragma once
 
 #include <cstdint>
@@ -48,12 +49,26 @@ struct AudioWriteReport {
                                     ///< integrated loudness (silence, < 0.4 s): gain left at 1
 };
 
-/// @brief Infers the format from a file name: `.flac` → Flac, otherwise Wav.
-AudioFormat audioFormatFromPath(const std::filesystem::path& path);
+/// @brief The format of a file name's extension, any case: `.flac` → Flac, `.wav` → Wav, any other
+///        (or none) → nullopt: libsndfile is not asked to guess.
+std::optional<AudioFormat> audioFormatFromPath(const std::filesystem::path& path);
 
-/// @brief Writes audio atomically. FLAC has no float samples: it is written as 24-bit (or 16-bit)
-///        PCM. PCM output beyond full scale is clipped and counted in the report (never silently).
-///        Three or more channels are written without speaker positions (io/channel_layout.h).
+/// The bytes of an audio file and what encoding did to the signal.
+struct EncodedAudio {
+  std::string bytes;
+  AudioWriteReport report;
+};
+
+/// @brief Encodes audio in memory, as writeAudio() would write it (`path` only names it in errors).
+/// @throws OutputError if libsndfile fails; std::invalid_argument on bad settings
+EncodedAudio encodeAudio(const std::filesystem::path& path, const AudioBuffer& audio,
+                         const AudioWriteSettings& settings);
+
+/// @brief Writes audio by the output rule (output_file.h): atomically onto a regular file or a new
+///        name, written through to a device, a FIFO or `-`. FLAC has no float samples: it is
+///        written as 24-bit (or 16-bit) PCM. PCM output beyond full scale is clipped and counted in
+///        the report (never silently). Three or more channels are written without speaker
+///        positions (io/channel_layout.h).
 /// @throws OutputError if the file cannot be written; std::invalid_argument on bad settings
 AudioWriteReport writeAudio(const std::filesystem::path& path, const AudioBuffer& audio,
                             const AudioWriteSettings& settings);

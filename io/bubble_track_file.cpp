@@ -15,11 +15,11 @@
 #include <system_error>
 #include <utility>
 
-#include "io/atomic_file.h"
 #include "io/bubble_track_fast_reader.h"
 #include "io/bubble_track_limits.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
+#include "io/output_file.h"
 
 namespace fluidsound::io {
 namespace {
@@ -299,19 +299,7 @@ void writeBubbleTracks(const std::filesystem::path& path, const acoustics::Bubbl
     throw std::invalid_argument("cannot write invalid bubble tracks: " + std::string(error.what()));
   }
 
-  AtomicFile output(path);
-  std::FILE* file = std::fopen(output.temporaryPath().c_str(), "wb");
-  if (file == nullptr) {
-    throw OutputError(path.string() + ": cannot write: " + std::generic_category().message(errno));
-  }
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  const int writeError = errno;
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) {
-    const int error = written ? errno : writeError;
-    throw OutputError(path.string() + ": cannot write: " + std::generic_category().message(error));
-  }
-  output.commit();
+  writeOutputFile(path, text);  // the output rule (output_file.h)
 }
 
 }  // namespace fluidsound::io

@@ -7,7 +7,8 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
+#include <istream>
+#include <sstream>
 #include <string_view>
 
 #include "io/input_error.h"
@@ -113,7 +114,7 @@ struct FlacBlock {
 };
 
 /// Reads "fLaC" and every metadata block; leaves `in` at the first audio frame.
-std::vector<FlacBlock> readFlacMetadata(const fs::path& path, std::ifstream& in) {
+std::vector<FlacBlock> readFlacMetadata(const fs::path& path, std::istream& in) {
   std::array<char, 4> magic{};
   if (!in.read(magic.data(), 4) || std::memcmp(magic.data(), "fLaC", 4) != 0)
     cannotLabel(path, "the encoder did not write a FLAC stream");
@@ -134,14 +135,13 @@ std::vector<FlacBlock> readFlacMetadata(const fs::path& path, std::ifstream& in)
   return blocks;
 }
 
-void writeFlacBlock(std::ofstream& out, const FlacBlock& block, bool last) {
+void appendFlacBlock(std::string& out, const FlacBlock& block, bool last) {
   const std::size_t length = block.body.size();
-  const char header[4] = {static_cast<char>(block.type | (last ? kFlacLastBlockFlag : 0)),
-                          static_cast<char>((length >> 16) & 0xff),
-                          static_cast<char>((length >> 8) & 0xff),
-                          static_cast<char>(length & 0xff)};
-  out.write(header, 4);
-  out.write(block.body.data(), static_cast<std::streamsize>(length));
+  out.push_back(static_cast<char>(block.type | (last ? kFlacLastBlockFlag : 0)));
+  out.push_back(static_cast<char>((length >> 16) & 0xff));
+  out.push_back(static_cast<char>((length >> 8) & 0xff));
+  out.push_back(static_cast<char>(length & 0xff));
+  out += block.body;
 }
 
 }  // namespace
@@ -158,57 +158,48 @@ std::string ixmlTrackList(const std::vector<std::string>& names) {
   return xml + "</TRACK_LIST>\n</BWFXML>\n";
 }
 
-void clearWaveSpeakerMask(const fs::path& wav) {
-  std::fstream file(wav, std::ios::in | std::ios::out | std::ios::binary);
-  unsigned char riff[12];
-  if (!file.read(reinterpret_cast<char*>(riff), 12) || std::memcmp(riff, "RIFF", 4) != 0 ||
-      std::memcmp(riff + 8, "WAVE", 4) != 0)
-    cannotLabel(wav, "the encoder did not write a RIFF WAVE file");
-  unsigned char chunk[8];
-  while (file.read(reinterpret_cast<char*>(chunk), 8)) {
-    const std::uint32_t size = littleEndian32(chunk + 4);
-    if (std::memcmp(chunk, "fmt ", 4) != 0) {
-      file.seekg(static_cast<std::streamoff>(size + (size & 1u)), std::ios::cur);
+void clearWaveSpeakerMask(std::string& wav, const fs::path& name) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(wav.data());
+  if (wav.size() < 12 || std::memcmp(bytes, "RIFF", 4) != 0 || std::memcmp(bytes + 8, "WAVE", 4) != 0)
+    cannotLabel(name, "the encoder did not write a RIFF WAVE file");
+  for (std::size_t at = 12; at + 8 <= wav.size();) {
+    const std::size_t size = littleEndian32(bytes + at + 4);
+    if (std::memcmp(bytes + at, "fmt ", 4) != 0) {
+      at += 8 + size + (size & 1u);
       continue;
     }
-    unsigned char fmt[kExtensibleFmtBytes];
-    if (size < kExtensibleFmtBytes || !file.read(reinterpret_cast<char*>(fmt), kExtensibleFmtBytes))
-      cannotLabel(wav, "its fmt chunk is not WAVE_FORMAT_EXTENSIBLE");
+    const unsigned char* fmt = bytes + at + 8;
+    if (size < kExtensibleFmtBytes || at + 8 + kExtensibleFmtBytes > wav.size())
+      cannotLabel(name, "its fmt chunk is not WAVE_FORMAT_EXTENSIBLE");
     const auto tag = static_cast<std::uint16_t>(fmt[0] | (fmt[1] << 8));
     const auto cbSize =
         static_cast<std::uint16_t>(fmt[kCbSizeOffset] | (fmt[kCbSizeOffset + 1] << 8));
     if (tag != kWaveFormatExtensible || cbSize < 22)
-      cannotLabel(wav, "its fmt chunk is not WAVE_FORMAT_EXTENSIBLE");
-    file.seekp(-static_cast<std::streamoff>(kExtensibleFmtBytes - kChannelMaskOffset),
-               std::ios::cur);
-    const char zero[4] = {0, 0, 0, 0};
-    if (!file.write(zero, 4) || !file.flush()) cannotLabel(wav, "patching its speaker mask failed");
+      cannotLabel(name, "its fmt chunk is not WAVE_FORMAT_EXTENSIBLE");
+    wav.replace(at + 8 + kChannelMaskOffset, 4, 4, '\0');
     return;
   }
-  cannotLabel(wav, "the encoder wrote no fmt chunk");
+  cannotLabel(name, "the encoder wrote no fmt chunk");
 }
 
-void copyFlacWithoutSpeakerMask(const fs::path& flac, const fs::path& labelled) {
-  std::ifstream in(flac, std::ios::binary);
-  if (!in) cannotLabel(flac, "cannot read back the encoded FLAC");
-  std::vector<FlacBlock> blocks = readFlacMetadata(flac, in);
+std::string flacWithoutSpeakerMask(const std::string& flac, const fs::path& name) {
+  std::istringstream in(flac);
+  std::vector<FlacBlock> blocks = readFlacMetadata(name, in);
+  const auto audioStart = static_cast<std::size_t>(in.tellg());
   VorbisComments comments;
   std::vector<FlacBlock> kept;
   for (FlacBlock& block : blocks) {
     if (block.type == kFlacVorbisCommentType)
-      comments = parseVorbisComments(flac, block.body);
+      comments = parseVorbisComments(name, block.body);
     else
       kept.push_back(std::move(block));
   }
   comments.entries.emplace_back(kNoSpeakerMask);
-  std::ofstream out(labelled, std::ios::binary | std::ios::trunc);
-  out.write("fLaC", 4);
-  for (const FlacBlock& block : kept) writeFlacBlock(out, block, false);
-  writeFlacBlock(out, {kFlacVorbisCommentType, vorbisCommentBody(comments)}, true);
-  std::vector<char> buffer(1 << 20);
-  while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
-    out.write(buffer.data(), in.gcount());
-  if (in.bad() || !out.flush()) cannotLabel(labelled, "copying the FLAC stream failed");
+  std::string labelled = "fLaC";
+  for (const FlacBlock& block : kept) appendFlacBlock(labelled, block, false);
+  appendFlacBlock(labelled, {kFlacVorbisCommentType, vorbisCommentBody(comments)}, true);
+  labelled.append(flac, audioStart, std::string::npos);
+  return labelled;
 }
 
 }  // namespace fluidsound::io

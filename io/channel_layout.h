@@ -18,18 +18,17 @@ constexpr std::size_t kFirstUnpositionedChannelCount = 3;
 ///        for a WAV file's `iXML` chunk; names are XML-escaped.
 std::string ixmlTrackList(const std::vector<std::string>& names);
 
-/// @brief Sets the speaker mask (dwChannelMask) of a closed WAVE_FORMAT_EXTENSIBLE file to 0,
-///        "no speaker positions", in place: libsndfile writes the usual surround masks for 4, 6
-///        and 8 channels and offers no way to ask for none.
-/// @throws OutputError if the file cannot be patched or is not WAVE_FORMAT_EXTENSIBLE
-void clearWaveSpeakerMask(const std::filesystem::path& wav);
+/// @brief Sets the speaker mask (dwChannelMask) of an encoded WAVE_FORMAT_EXTENSIBLE file in
+///        memory to 0, "no speaker positions": libsndfile writes the usual surround masks for 4,
+///        6 and 8 channels and offers no way to ask for none. `name` is the output's, for errors.
+/// @throws OutputError if the bytes are not a WAVE_FORMAT_EXTENSIBLE file
+void clearWaveSpeakerMask(std::string& wav, const std::filesystem::path& name);
 
-/// @brief Copies a closed FLAC file to `labelled` with the Vorbis comment
-///        WAVEFORMATEXTENSIBLE_CHANNEL_MASK=0x0 (no speaker positions; the FLAC format's way to
-///        override its default layouts for 3–8 channels), keeping any other comments; the audio
-///        frames are copied byte for byte.
-/// @throws OutputError if a file cannot be read or written or `flac` is not a FLAC stream
-void copyFlacWithoutSpeakerMask(const std::filesystem::path& flac,
-                                const std::filesystem::path& labelled);
+/// @brief An encoded FLAC stream with the Vorbis comment WAVEFORMATEXTENSIBLE_CHANNEL_MASK=0x0
+///        (no speaker positions; the FLAC format's way to override its default layouts for 3–8
+///        channels), keeping any other comments; the audio frames are copied byte for byte.
+///        `name` is the output's, for errors.
+/// @throws OutputError if `flac` is not a FLAC stream
+std::string flacWithoutSpeakerMask(const std::string& flac, const std::filesystem::path& name);
 
 }  // namespace fluidsound::io

@@ -1,20 +1,18 @@
 // io/frame_ply.cpp — frames/NNNN.ply (see frame_files.h).
 #include <bit>
 #include <cstring>
-#include <fstream>
+#include <sstream>
 #include <string>
 
-#include "io/atomic_file.h"
 #include "io/frame_files.h"
-#include "io/input_error.h"
+#include "io/output_file.h"
 
 namespace fluidsound::io {
 
 void writeParticlesPly(const std::filesystem::path& path, const sim::Particles& particles) {
   static_assert(std::endian::native == std::endian::little, "PLY is written as the host's little-endian floats");
-  AtomicFile out(path);
+  std::ostringstream file;
   {
-    std::ofstream file(out.temporaryPath(), std::ios::binary);
     file << "ply\nformat binary_little_endian 1.0\ncomment fluidsound particles, SI units\n"
          << "element vertex " << particles.size() << "\n"
          << "property float x\nproperty float y\nproperty float z\n"
@@ -28,10 +26,8 @@ void writeParticlesPly(const std::filesystem::path& path, const sim::Particles& 
       at += 6 * sizeof(float);
     }
     file.write(block.data(), static_cast<std::streamsize>(block.size()));
-    file.flush();
-    if (!file) throw OutputError(path.string() + ": cannot write the PLY file");
   }
-  out.commit();
+  writeOutputFile(path, file.str());  // the output rule (output_file.h)
 }
 
 }  // namespace fluidsound::io

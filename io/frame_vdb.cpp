@@ -4,9 +4,14 @@
 #include <openvdb/tools/LevelSetFilter.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
 
+#include <fstream>
+#include <iterator>
+#include <string>
+
 #include "io/atomic_file.h"
 #include "io/frame_files.h"
 #include "io/input_error.h"
+#include "io/output_file.h"
 
 namespace fluidsound::io {
 namespace {
@@ -79,7 +84,11 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
     accessor.setValue(c, v);
   }
 
-  AtomicFile out(path);
+  // OpenVDB writes its file format only to a seekable file: a frame for a device or a FIFO is
+  // composed in a temporary of the system's temporary folder, then its bytes are written through.
+  const OutputTarget target = resolveOutput(path);
+  const bool replace = target.kind == OutputKind::Replace;
+  AtomicFile out(replace ? path : std::filesystem::temp_directory_path() / "fluidsound-frame.vdb");
   try {
     openvdb::io::File file(out.temporaryPath().string());
     file.write({level, cellVelocity});
@@ -87,7 +96,16 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
   } catch (const openvdb::Exception& e) {
     throw OutputError(path.string() + ": cannot write the VDB file: " + e.what());
   }
-  out.commit();
+  if (replace) {
+    out.commit();
+  } else {
+    std::ifstream composed(out.temporaryPath(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(composed)),
+                            std::istreambuf_iterator<char>());
+    if (!composed)
+      throw OutputError(path.string() + ": cannot write: the composed frame cannot be read back");
+    writeOutputFile(path, bytes);
+  }
 }
 
 }  // namespace fluidsound::io

@@ -13,11 +13,13 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <unsupported/Eigen/FFT>
 #include <vector>
 
-#include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
+#include "io/output_file.h"
 
 namespace fluidsound::io {
 namespace {
@@ -447,13 +449,22 @@ std::array<std::uint8_t, 3> spectrogramColour(double level) {
 
 void writeSpectrogramPng(const std::filesystem::path& path, const AudioBuffer& audio,
                          const SpectrogramSettings& settings, const std::string& title) {
+  // Encoded in memory, then written by the output rule (output_file.h).
+  writeOutputFile(path, encodeSpectrogramPng(audio, settings,
+                                             title.empty() ? path.filename().string() : title));
+}
+
+std::string encodeSpectrogramPng(const AudioBuffer& audio, const SpectrogramSettings& settings,
+                                 const std::string& title) {
   validate(audio, settings);
   const std::vector<float> signal = selectSignal(audio, settings.channel);
   const SpectrogramPlotArea area = spectrogramPlotArea(settings);
   const double duration = static_cast<double>(signal.size()) / audio.sampleRate;
 
   // Colour level of each plot pixel: 0 dB = the largest value in the picture.
+  throwIfInterrupted("spectrogram");
   const std::vector<float> power = pooledPower(signal, audio.sampleRate, settings);
+  throwIfInterrupted("spectrogram");
   const float peak = *std::max_element(power.begin(), power.end());
   const auto level = [&](int x, int y) {
     const float p = power[static_cast<std::size_t>(y) * area.width + x];
@@ -487,21 +498,23 @@ void writeSpectrogramPng(const std::filesystem::path& path, const AudioBuffer& a
   const std::string details = formatNumber(audio.sampleRate, 0) + " Hz, " + channelText +
                               ", Hann " + std::to_string(settings.windowSamples) + ", hop " +
                               std::to_string(settings.hopSamples);
-  drawTitle(cr.get(), area, title.empty() ? path.filename().string() : title, details,
-            settings.width);
+  drawTitle(cr.get(), area, title, details, settings.width);
   cairo_select_font_face(cr.get(), "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   drawTimeAxis(cr.get(), area, duration, settings);
   drawFrequencyAxis(cr.get(), area, audio.sampleRate, settings);
   drawColourBar(cr.get(), area, settings);
   cairo_surface_flush(image.get());
 
-  AtomicFile out(path);
-  const cairo_status_t status =
-      cairo_surface_write_to_png(image.get(), out.temporaryPath().c_str());
+  std::string png;
+  const auto append = [](void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+  };
+  const cairo_status_t status = cairo_surface_write_to_png_stream(image.get(), append, &png);
   if (status != CAIRO_STATUS_SUCCESS)
-    throw OutputError(path.string() + ": cannot write: writing the PNG failed (" +
+    throw OutputError(std::string("spectrogram: cannot encode the PNG (") +
                       cairo_status_to_string(status) + ")");
-  out.commit();
+  return png;
 }
 
 }  // namespace fluidsound::io

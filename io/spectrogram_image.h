@@ -22,7 +22,8 @@ struct SpectrogramSettings {
   int channel = -1;                 ///< channel to draw; −1 = mean of all channels
 };
 
-/// @brief Renders the spectrogram of `audio` to a PNG, written atomically (docs/spectrogram.md).
+/// @brief Renders the spectrogram of `audio` to a PNG, written by the output rule of
+///        output_file.h (docs/spectrogram.md).
 /// @param title  first line of the picture; empty: the PNG's file name
 /// @throws OutputError if the PNG cannot be written; std::invalid_argument for empty audio,
 ///         channels of different lengths, a non-finite sample or sample rate, or bad settings
@@ -31,6 +32,12 @@ struct SpectrogramSettings {
 ///         (0, Nyquist))
 void writeSpectrogramPng(const std::filesystem::path& path, const AudioBuffer& audio,
                          const SpectrogramSettings& settings, const std::string& title = {});
+
+/// @brief The PNG writeSpectrogramPng() writes, as bytes, titled `title`; for callers that write
+///        several outputs all or nothing (io::OutputBatch).
+/// @throws std::invalid_argument as writeSpectrogramPng(); io::Interrupted after a signal
+std::string encodeSpectrogramPng(const AudioBuffer& audio, const SpectrogramSettings& settings,
+                                 const std::string& title);
 
 // The picture's geometry and colours, public so that tests (and callers that annotate the
 // picture) use the same mapping as the renderer.

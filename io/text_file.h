@@ -1,4 +1,4 @@
-// io/text_file.h — writing small text outputs (JSON reports) atomically.
+// io/text_file.h — writing small text outputs (JSON reports) by the output rule (output_file.h).
 #pragma once
 
 #include <filesystem>
@@ -6,12 +6,14 @@
 
 namespace fluidsound::io {
 
-/// @brief Writes `text` to `path` through a temporary file in the same folder and a rename.
-/// @throws OutputError if it cannot be written
+/// @brief Writes `text` to `path` by the output rule: atomically onto a regular file or a new
+///        name, written through to a character device, a FIFO or `-`.
+/// @throws OutputError if it cannot be written or the path is refused
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
-/// @brief Checks, before any work, that `path` could be written: its folder exists and is
-///        writable, and `path` itself is not a folder.
+/// @brief Checks, before any work, that `path` could be written by the output rule: a new name or
+///        a regular file (or a symlink to one) in an existing, writable folder, a character
+///        device, a FIFO or `-`; never a folder, a socket, a block device or a link to nothing.
 /// @throws OutputError naming the path and what is wrong
 void requireWritableFolder(const std::filesystem::path& path);
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "tools/command_options.h"
 #include "tools/run_report.h"
 
 namespace fluidsound::tools {
@@ -33,7 +34,7 @@ std::string scaleText(double gain) {
 void addAudioOutputOptions(CLI::App& c, AudioOutputOptions& o) {
   c.add_option("--rate", o.sampleRate, "sample rate in Hz (default: the bubble file's sample_rate)")
       ->check(CLI::Range(8000.0, 768000.0));
-  c.add_option("--format", o.format, "wav or flac (default: from the output's extension)")
+  c.add_option("--format", o.format, "wav or flac (default: from the output's extension; WAV for -, a device or a FIFO)")
       ->check(CLI::IsMember({"wav", "flac"}, CLI::ignore_case));
   c.add_option("--bits", o.bits, "bits per sample: 32 (float), 24 or 16 (PCM with TPDF dither)")
       ->check(CLI::IsMember({16, 24, 32}));
@@ -52,17 +53,13 @@ void addAudioOutputOptions(CLI::App& c, AudioOutputOptions& o) {
       ->needs(loudness);
 }
 
-io::AudioFormat audioFormat(const AudioOutputOptions& o, const std::filesystem::path& output) {
-  if (o.format.empty()) return io::audioFormatFromPath(output);
-  return (o.format == "flac" || o.format == "FLAC") ? io::AudioFormat::Flac : io::AudioFormat::Wav;
-}
-
 io::AudioWriteSettings audioWriteSettings(const AudioOutputOptions& o,
                                           const std::filesystem::path& output,
                                           std::vector<std::string> channelNames) {
+  const AudioLayout layout = audioLayout(output.string(), o.format, o.bits);
   io::AudioWriteSettings write;
-  write.format = audioFormat(o, output);
-  write.bitsPerSample = o.bits != 0 ? o.bits : (write.format == io::AudioFormat::Flac ? 24 : 32);
+  write.format = layout.format;
+  write.bitsPerSample = layout.bits;
   write.normalizePeakDbfs = o.normalizeDbfs;
   if (o.loudnessLufs) write.loudness = acoustics::LoudnessTarget{*o.loudnessLufs, o.truePeakDbtp};
   write.channelNames = std::move(channelNames);

@@ -30,10 +30,9 @@ struct AudioOutputOptions {
 /// Adds the audio output options to a subcommand (docs/cli.md, `synth`).
 void addAudioOutputOptions(CLI::App& command, AudioOutputOptions& options);
 
-/// "wav" or "flac": the container the options and the output's name ask for.
-io::AudioFormat audioFormat(const AudioOutputOptions& options, const std::filesystem::path& output);
-
-/// @brief The write settings the options mean for `output`, naming channel c `channelNames[c]`.
+/// @brief The write settings the options mean for `output`, naming channel c `channelNames[c]`:
+///        the format and bits of audioLayout() (command_options.h), checked before any work.
+/// @throws CLI::ValidationError (exit 2) naming --output, --format or --bits
 io::AudioWriteSettings audioWriteSettings(const AudioOutputOptions& options,
                                           const std::filesystem::path& output,
                                           std::vector<std::string> channelNames);

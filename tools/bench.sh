@@ -38,4 +38,4 @@ awk -F, '
   --pour-end 60 --peak-rate 2000 >/dev/null
 /usr/bin/time -f "60 s render: %e s wall, peak resident memory %M KiB" \
   "$build/tools/fluidsound" synth "$work/long.bubbles.json" -o "$work/long.wav" --quiet
-grep -E '"(read|synthesis|write)"' -A1 "$work/long.report.json" | tr -d '\n{} ' | sed 's/--/ /g; s/$/\n/'
+grep -E '"(read|synthesis|write)"' -A1 "$work/long.wav.report.json" | tr -d '\n{} ' | sed 's/--/ /g; s/$/\n/'

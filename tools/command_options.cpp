@@ -1,10 +1,17 @@
 // tools/command_options.cpp — shared subcommand options (see command_options.h).
 #include "tools/command_options.h"
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <map>
 #include <string>
+#include <system_error>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "io/output_file.h"
 
 namespace fluidsound::tools {
 
@@ -36,6 +43,60 @@ void addOscillatorModelOptions(CLI::App& command, acoustics::OscillatorModel& mo
   command.add_flag("--chirp", model.chirp, "van den Doel rising pitch f0 (1 + xi beta t)");
   command.add_option("--chirp-rise", model.chirpRiseFactor, "van den Doel rise factor xi (default 0.1)")
       ->check(CLI::NonNegativeNumber);
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The same file: both exist and are one file, or their normalised absolute paths agree.
+bool sameFile(const NamedFile& a, const NamedFile& b) {
+  const bool aStdio = a.path == "-", bStdio = b.path == "-";
+  if (aStdio || bStdio) return aStdio && bStdio && a.input == b.input;
+  std::error_code ec;
+  if (fs::exists(a.path, ec) && fs::exists(b.path, ec)) return fs::equivalent(a.path, b.path, ec);
+  const fs::path left = fs::weakly_canonical(fs::absolute(a.path, ec), ec);
+  const fs::path right = fs::weakly_canonical(fs::absolute(b.path, ec), ec);
+  return left.lexically_normal() == right.lexically_normal();
+}
+
+}  // namespace
+
+void requireDistinctFiles(std::initializer_list<NamedFile> files) {
+  const std::vector<NamedFile> given(files);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    for (std::size_t j = i + 1; j < given.size(); ++j) {
+      if (given[i].path.empty() || given[j].path.empty() || !sameFile(given[i], given[j])) continue;
+      const std::string options = std::string(given[i].option) + " and " + given[j].option;
+      throw CLI::ValidationError(
+          options, "both name " + given[j].path + "; an output must be neither an input nor another output");
+    }
+  }
+}
+
+AudioLayout audioLayout(const std::string& output, const std::string& format, int bits) {
+  AudioLayout layout;
+  if (!format.empty()) {
+    std::string name = format;
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    layout.format = name == "flac" ? io::AudioFormat::Flac : io::AudioFormat::Wav;
+    const auto fromName = io::audioFormatFromPath(output);
+    if (fromName && *fromName != layout.format)
+      throw CLI::ValidationError("--format and --output",
+                                 "--format " + format + " but " + output + " names the other format");
+  } else if (const auto fromName = io::audioFormatFromPath(output)) {
+    layout.format = *fromName;
+  } else if (io::resolveOutput(output).kind == io::OutputKind::Replace) {
+    // A stream (`-`, a device, a FIFO) has no extension and gets WAV; a file name must say.
+    const std::string expected = "expected a name ending in .wav or .flac, or --format wav|flac";
+    throw CLI::ValidationError("--output", output + ": no audio format for this name: " + expected);
+  }
+  const bool flac = layout.format == io::AudioFormat::Flac;
+  layout.bits = bits != 0 ? bits : (flac ? 24 : 32);
+  if (flac && layout.bits == 32)
+    throw CLI::ValidationError("--bits", "FLAC holds 16- or 24-bit PCM, not 32-bit float: use --bits 24 or 16");
+  return layout;
 }
 
 }  // namespace fluidsound::tools

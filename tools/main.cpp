@@ -2,11 +2,13 @@
 // limit, runs one subcommand and turns every failure into one line and an exit code (docs/cli.md).
 #include <cstdio>
 #include <exception>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 #include <oneapi/tbb/global_control.h>
 
 #include "io/input_error.h"
+#include "io/interruption.h"
 #include "sim/simulation_failure.h"
 #include "tools/run_command.h"
 #include "tools/run_report.h"
@@ -22,12 +24,14 @@ namespace {
 
 int runWithThreads(int threads, const auto& command) {
   // The only place that limits TBB's threads (docs/cli.md: --threads N, 0 = all cores).
-  if (threads > 0) {
-    const oneapi::tbb::global_control limit(oneapi::tbb::global_control::max_allowed_parallelism,
-                                            static_cast<std::size_t>(threads));
-    return command();
-  }
-  return command();
+  std::optional<oneapi::tbb::global_control> limit;
+  if (threads > 0)
+    limit.emplace(oneapi::tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  const int code = command();
+  // A signal no loop saw (a short command, the last step): the outputs are whole, but the
+  // command still ends as interrupted.
+  fluidsound::io::throwIfInterrupted("the end, every output written");
+  return code;
 }
 
 }  // namespace
@@ -60,6 +64,8 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
 
+  // SIGINT and SIGTERM from here on end the command through io::Interrupted (docs/cli.md).
+  fluidsound::io::installInterruptionHandlers();
   try {
     if (synthCommand->parsed())
       return runWithThreads(synth.common.threads, [&] { return runSynthCommand(synth); });
@@ -72,6 +78,9 @@ int main(int argc, char** argv) {
     if (runCommand->parsed()) return runWithThreads(run.common.threads, [&] { return runRunCommand(run); });
     if (transferCommand->parsed())
       return runWithThreads(transfer.common.threads, [&] { return runTransferCommand(transfer); });
+  } catch (const fluidsound::io::Interrupted& e) {
+    std::fprintf(stderr, "fluidsound: %s\n", e.what());
+    return e.exitCode();
   } catch (const fluidsound::io::InputError& e) {
     std::fprintf(stderr, "fluidsound: error: %s\n", e.what());
     return kExitBadInput;

@@ -16,7 +16,7 @@ if [[ "$name" == *.bubbles ]]; then
   outdir=${2:-"$here/out"}
   mkdir -p "$outdir"
   "$fluidsound" synth "$input" -o "$outdir/$name.wav" --spectrogram "$outdir/$name.png"
-  echo "listen: $outdir/$name.wav   look: $outdir/$name.png   report: $outdir/$name.report.json"
+  echo "listen: $outdir/$name.wav   look: $outdir/$name.png   report: $outdir/$name.wav.report.json"
 else
   name=${name%.scene}
   outdir=${2:-"$here/out/$name"}

@@ -25,6 +25,7 @@
 #include "io/file_digest.h"
 #include "io/frame_folder.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
 #include "tools/cell_option.h"
@@ -87,7 +88,8 @@ std::vector<std::string> frameFiles(const sim::Scene& scene) {
 std::string audioName(const std::filesystem::path& scene, const AudioOutputOptions& audio) {
   std::string stem = scene.stem().string();
   if (stem.size() > 6 && stem.ends_with(".scene")) stem.resize(stem.size() - 6);
-  return stem + (audioFormat(audio, stem + ".wav") == io::AudioFormat::Flac ? ".flac" : ".wav");
+  const bool flac = audio.format == "flac" || audio.format == "FLAC";
+  return stem + (flac ? ".flac" : ".wav");
 }
 
 /// Checks, before the first frame, that each file the run writes into an existing OUTDIR could be
@@ -159,9 +161,21 @@ Json spectrumSummary(const acoustics::BubbleTrackSet& tracks,
   }
   return {{"band_hz", {band.low, band.high}}, {"channels", channels}};
 }
-}  // namespace
 
-int runRunCommand(const RunOptions& o) {
+/// After a signal in a stage: OUTDIR/report.json says `"complete": false` and where the run
+/// stopped (simulate marks its own; a later stage marks the report it started from).
+io::Interrupted markRunIncomplete(const std::filesystem::path& out, const io::Interrupted& signal) {
+  if (!signal.aftermath().empty()) return signal;
+  const std::filesystem::path path = out / "report.json";
+  Json report = Json::parse(fileBytes(path), nullptr, false);
+  if (!report.is_object()) report = {{"format", "fluidsound.report/1"}, {"command", "run"}};
+  report["complete"] = false;
+  report["interrupted_at"] = signal.where();
+  io::writeTextFile(path, jsonFileText(report));
+  return io::Interrupted(signal.signalNumber(), signal.where(), path.string() + " marked incomplete");
+}
+
+int runStages(const RunOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   // Bad input (the scene, --cell) stops here, before any output.
@@ -253,11 +267,14 @@ int runRunCommand(const RunOptions& o) {
   }
   run["spectrum"] = spectrumSummary(tracks, out / audioFile, o.audio.sampleRate);
   report["run"] = run;
+  report["complete"] = true;  // also over the mark an interrupted earlier run left
+  report.erase("interrupted_at");
+  io::throwIfInterrupted("run, before writing report.json");
   // The run's report.json is simulate's plus `run`: recorded as made from simulate's, so that
   // simulate's artefact still counts as intact next time.
   const std::optional<io::FileDigest> simulateReport =
       records.recordedArtefact("simulate", "report.json");
-  io::writeTextFile(out / "report.json", report.dump(2) + "\n");
+  io::writeTextFile(out / "report.json", jsonFileText(report));
   if (simulateReport)
     records.complete("report", hash, {{"report.json", *simulateReport}}, {"report.json"});
   if (!o.common.quiet)
@@ -265,6 +282,15 @@ int runRunCommand(const RunOptions& o) {
                  tracks.bubbles.size(), (out / audioFile).string().c_str(),
                  run["seconds"].get<double>());
   return kExitSuccess;
+}
+}  // namespace
+
+int runRunCommand(const RunOptions& o) {
+  try {
+    return runStages(o);
+  } catch (const io::Interrupted& signal) {
+    throw markRunIncomplete(o.output, signal);
+  }
 }
 
 }  // namespace fluidsound::tools

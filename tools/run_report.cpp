@@ -18,6 +18,7 @@ struct RunReport::Data {
 RunReport::RunReport(const std::string& command) : data_(std::make_unique<Data>()) {
   data_->json["format"] = "fluidsound.report/1";
   data_->json["command"] = command;
+  data_->json["complete"] = true;
   data_->json["settings"] = nlohmann::ordered_json::object();
   data_->json["stages"] = nlohmann::ordered_json::object();
   data_->json["results"] = nlohmann::ordered_json::object();
@@ -78,12 +79,23 @@ std::string versionText() {
   return text;
 }
 
-void RunReport::write(const std::filesystem::path& path) {
+void RunReport::markIncomplete(const std::string& interruptedAt) {
+  data_->json["complete"] = false;
+  data_->json["interrupted_at"] = interruptedAt;
+}
+
+std::string RunReport::text() {
   data_->json["peak_memory_bytes"] = peakMemoryBytes();
   nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
   for (const auto& [name, version] : versions()) libraries[name] = version;
   data_->json["versions"] = libraries;
-  io::writeTextFile(path, data_->json.dump(2) + "\n");
+  return jsonFileText(data_->json);
 }
+
+std::string jsonFileText(const nlohmann::ordered_json& document) {
+  return document.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+void RunReport::write(const std::filesystem::path& path) { io::writeTextFile(path, text()); }
 
 }  // namespace fluidsound::tools

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <memory>
 #include <string>
 #include <utility>
@@ -28,7 +29,14 @@ class RunReport {
   /// Attaches a JSON document (text) under `key` of the results, e.g. a validation table.
   void resultJson(const std::string& key, const std::string& jsonText);
 
-  /// Adds peak memory and `versions` (an object: library name → version), then writes atomically.
+  /// `"complete": false` and where the command stopped (a signal); every report is complete
+  /// otherwise.
+  void markIncomplete(const std::string& interruptedAt);
+
+  /// Adds peak memory and `versions` (an object: library name → version) and returns the document.
+  std::string text();
+
+  /// text(), written by the output rule (io/output_file.h).
   /// @throws io::OutputError
   void write(const std::filesystem::path& path);
 
@@ -42,6 +50,11 @@ std::vector<std::pair<std::string, std::string>> versions();
 
 /// `fluidsound --version`: "fluidsound X.Y.Z", then "  NAME VERSION" per library, one per line.
 std::string versionText();
+
+/// @brief A JSON document as the text of a file we write, indented by 2: bytes that are not UTF-8
+///        (a Linux file name is bytes) become U+FFFD, so the file still names its paths as well as
+///        it can instead of failing after the work.
+std::string jsonFileText(const nlohmann::ordered_json& document);
 
 /// Peak resident memory of this process [bytes].
 double peakMemoryBytes();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +17,7 @@
 #include "io/frame_files.h"
 #include "io/frame_folder.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
 #include "io/scene_file.h"
 #include "io/scene_meshes.h"
 #include "io/text_file.h"
@@ -113,65 +115,76 @@ int runSimulateCommand(const SimulateOptions& o) {
   // The bubble model runs inside the loop on the in-memory state (DESIGN.md), with the scene's
   // `bubbles` block (docs/bubbles.md).
   sim::BubbleModel bubbles(scene.bubbles, scene.seed, scene.gravity);
-  const sim::SubstepObserver stepBubbles = [&bubbles](const sim::LiquidState& liquid, double t, double dt) {
+  int frame = 0;  // the frame being made, named by the message of a signal
+  const sim::SubstepObserver stepBubbles = [&bubbles, &frame](const sim::LiquidState& liquid, double t, double dt) {
+    io::throwIfInterrupted("simulate frame " + std::to_string(frame));
     bubbles.step(liquid, t, dt);
   };
   double bubbleSeconds = 0.0;
   nlohmann::ordered_json perFrame = nlohmann::ordered_json::array();
   double simulateSeconds = 0.0, writeSeconds = 0.0;
   ProgressDisplay progress("simulate", range.last + 1, "frames", o.common.quiet);
-  for (int f = 0; f <= range.last; ++f) {
-    const auto t0 = Clock::now();
-    sim::FrameStats stats;
-    if (f == 0) {  // the initial state: nothing simulated, but its volume is the reference
-      stats.particles = solver.particles().size();
-      stats.liquidVolume = solver.liquidVolume();  // outside the solids, as every later frame's
-    } else {
-      try {
-        stats = solver.advanceTo(f / scene.time.fps, stepBubbles);
-      } catch (const sim::SubstepLimitError& e) {  // bad input: the scene asks for what cannot end
-        throw io::InputError(o.scene, e.likelyFields(),
-                             "a frame that ends within " + std::to_string(sim::kMaxSubstepsPerFrame) + " substeps",
-                             "frame " + std::to_string(f) + " needs " + e.what());
-      } catch (const sim::SimulationFailure& e) {  // one line: the scene, the frame, where
-        throw sim::SimulationFailure(o.scene + ": frame " + std::to_string(f) + ": " + e.what());
+  // A signal ends the frames (each written one is whole); the report then says where it ended.
+  std::optional<io::Interrupted> interrupted;
+  try {
+    for (int f = 0; f <= range.last; ++f) {
+      frame = f;
+      io::throwIfInterrupted("simulate frame " + std::to_string(f));
+      const auto t0 = Clock::now();
+      sim::FrameStats stats;
+      if (f == 0) {  // the initial state: nothing simulated, but its volume is the reference
+        stats.particles = solver.particles().size();
+        stats.liquidVolume = solver.liquidVolume();  // outside the solids, as every later frame's
+      } else {
+        try {
+          stats = solver.advanceTo(f / scene.time.fps, stepBubbles);
+        } catch (const sim::SubstepLimitError& e) {  // bad input: the scene asks for what cannot end
+          throw io::InputError(o.scene, e.likelyFields(),
+                               "a frame that ends within " + std::to_string(sim::kMaxSubstepsPerFrame) + " substeps",
+                               "frame " + std::to_string(f) + " needs " + e.what());
+        } catch (const sim::SimulationFailure& e) {  // one line: the scene, the frame, where
+          throw sim::SimulationFailure(o.scene + ": frame " + std::to_string(f) + ": " + e.what());
+        }
+        const auto s0 = Clock::now();
+        bubbles.sampleFrame(solver.time());  // the bubble model's too, not the fluid's
+        bubbleSeconds += stats.stageSeconds.bubbles + std::chrono::duration<double>(Clock::now() - s0).count();
       }
-      const auto s0 = Clock::now();
-      bubbles.sampleFrame(solver.time());  // the bubble model's too, not the fluid's
-      bubbleSeconds += stats.stageSeconds.bubbles + std::chrono::duration<double>(Clock::now() - s0).count();
+      const auto t1 = Clock::now();
+      if (f >= range.first) {
+        io::writeFrameVdb(frames / frameName(f, "vdb"), solver.grid(), solver.particles(), solver.velocity(),
+                          {solver.particleRadius()});
+        if (o.ply) io::writeParticlesPly(frames / frameName(f, "ply"), solver.particles());
+      }
+      const auto t2 = Clock::now();
+      const double seconds = std::chrono::duration<double>(t2 - t0).count();
+      simulateSeconds += std::chrono::duration<double>(t1 - t0).count();
+      writeSeconds += std::chrono::duration<double>(t2 - t1).count();
+      perFrame.push_back({{"frame", f}, {"time", solver.time()}, {"substeps", stats.substeps},
+                          {"cg_iterations", stats.pressureIterations}, {"cg_residual", stats.pressureResidual},
+                          {"cg_converged", stats.pressureConverged}, {"particles", solver.particles().size()},
+                          {"particles_deleted", stats.particlesDeleted}, {"particles_emitted", stats.particlesEmitted},
+                          {"particles_reseeded", stats.particlesReseeded}, {"particles_thinned", stats.particlesThinned},
+                          {"density_cg_iterations", stats.densityIterations},
+                          {"max_density_excess", stats.maxDensityExcess},
+                          {"liquid_volume", stats.liquidVolume},
+                          {"max_divergence", stats.maxDivergence}, {"max_speed", stats.maxSpeed},
+                          {"bubbles_alive", bubbles.aliveCount()}, {"bubbles_total", bubbles.bubbles().size()},
+                          {"seconds", seconds}});
+      char line[160];  // through the display, which clears its line first on a terminal
+      std::snprintf(line, sizeof line,
+                    "frame %4d/%d  t %.3f s  substeps %2d  cg %4d (res %.1e)  particles %zu  %.2f s",
+                    f, range.last, solver.time(), stats.substeps, stats.pressureIterations,
+                    stats.pressureResidual, solver.particles().size(), seconds);
+      progress.log(line);
+      progress.update(static_cast<double>(f + 1) / (range.last + 1));
     }
-    const auto t1 = Clock::now();
-    if (f >= range.first) {
-      io::writeFrameVdb(frames / frameName(f, "vdb"), solver.grid(), solver.particles(), solver.velocity(),
-                        {solver.particleRadius()});
-      if (o.ply) io::writeParticlesPly(frames / frameName(f, "ply"), solver.particles());
-    }
-    const auto t2 = Clock::now();
-    const double seconds = std::chrono::duration<double>(t2 - t0).count();
-    simulateSeconds += std::chrono::duration<double>(t1 - t0).count();
-    writeSeconds += std::chrono::duration<double>(t2 - t1).count();
-    perFrame.push_back({{"frame", f}, {"time", solver.time()}, {"substeps", stats.substeps},
-                        {"cg_iterations", stats.pressureIterations}, {"cg_residual", stats.pressureResidual},
-                        {"cg_converged", stats.pressureConverged}, {"particles", solver.particles().size()},
-                        {"particles_deleted", stats.particlesDeleted}, {"particles_emitted", stats.particlesEmitted},
-                        {"particles_reseeded", stats.particlesReseeded}, {"particles_thinned", stats.particlesThinned},
-                        {"density_cg_iterations", stats.densityIterations},
-                        {"max_density_excess", stats.maxDensityExcess},
-                        {"liquid_volume", stats.liquidVolume},
-                        {"max_divergence", stats.maxDivergence}, {"max_speed", stats.maxSpeed},
-                        {"bubbles_alive", bubbles.aliveCount()}, {"bubbles_total", bubbles.bubbles().size()},
-                        {"seconds", seconds}});
-    char line[160];  // through the display, which clears its line first on a terminal
-    std::snprintf(line, sizeof line,
-                  "frame %4d/%d  t %.3f s  substeps %2d  cg %4d (res %.1e)  particles %zu  %.2f s",
-                  f, range.last, solver.time(), stats.substeps, stats.pressureIterations,
-                  stats.pressureResidual, solver.particles().size(), seconds);
-    progress.log(line);
-    progress.update(static_cast<double>(f + 1) / (range.last + 1));
+  } catch (const io::Interrupted& signal) {
+    interrupted = signal;
   }
   progress.finish();
   const auto w0 = Clock::now();
-  io::writeBubbleTracks(out / "bubbles.json", io::bubbleTracksFromHistories(bubbles.bubbles(), scene));
+  if (!interrupted)
+    io::writeBubbleTracks(out / "bubbles.json", io::bubbleTracksFromHistories(bubbles.bubbles(), scene));
   writeSeconds += std::chrono::duration<double>(Clock::now() - w0).count();
 
   RunReport report("simulate");
@@ -188,7 +201,11 @@ int runSimulateCommand(const SimulateOptions& o) {
   report.resultJson("frames", perFrame.dump());
   report.result("bubbles", static_cast<double>(bubbles.bubbles().size()));
   report.result("seconds", std::chrono::duration<double>(Clock::now() - start).count());
+  if (interrupted) report.markIncomplete(interrupted->where());
   report.write(out / "report.json");
+  if (interrupted)
+    throw io::Interrupted(interrupted->signalNumber(), interrupted->where(),
+                          (out / "report.json").string() + " marked incomplete");
   return kExitSuccess;
 }
 

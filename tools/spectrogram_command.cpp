@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 
 #include "io/audio_file.h"
+#include "io/output_file.h"
+#include "io/spectrogram_image.h"
 #include "io/text_file.h"
 
 namespace fluidsound::tools {
@@ -14,7 +16,7 @@ namespace fluidsound::tools {
 CLI::App* addSpectrogramCommand(CLI::App& app, SpectrogramOptions& o) {
   CLI::App* c = app.add_subcommand("spectrogram", "draw the spectrogram of an audio file to a PNG");
   c->add_option("audio", o.input, "audio file (WAV, FLAC, anything libsndfile reads)")->required();
-  c->add_option("-o,--output", o.output, "output PNG")->required();
+  c->add_option("-o,--output", o.output, "output PNG; - = standard output")->required();
   c->add_flag("--log-frequency", o.settings.logFrequency, "logarithmic frequency axis");
   c->add_option("--min-frequency", o.settings.minFrequency, "lower edge of a log axis, Hz")
       ->check(CLI::PositiveNumber);
@@ -32,10 +34,13 @@ CLI::App* addSpectrogramCommand(CLI::App& app, SpectrogramOptions& o) {
 }
 
 int runSpectrogramCommand(const SpectrogramOptions& o) {
+  requireDistinctFiles({{"audio", o.input, true}, {"--output", o.output}});
   io::requireWritableFolder(o.output);
   const io::AudioBuffer audio = io::readAudio(o.input);
   io::writeSpectrogramPng(o.output, audio, o.settings, std::filesystem::path(o.input).filename().string());
-  if (!o.common.quiet) std::fprintf(stderr, "fluidsound: wrote %s\n", o.output.c_str());
+  if (!o.common.quiet)
+    std::fprintf(stderr, "fluidsound: wrote %s\n",
+                 io::isStandardOutput(o.output) ? "standard output" : o.output.c_str());
   return kExitSuccess;
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "io/text_file.h"
+#include "tools/run_report.h"
 
 namespace fluidsound::tools {
 namespace {
@@ -182,7 +183,7 @@ void StageRecords::write() {
                      {"artefacts", digestsJson(record->second.artefacts)}};
   }
   const Json root = {{"format", kFormatTag}, {"stages", stages}};
-  io::writeTextFile(outdir_ / kFileName, root.dump(2) + "\n");
+  io::writeTextFile(outdir_ / kFileName, jsonFileText(root));
   ignoredOnDisk_ = false;
 }
 

@@ -14,10 +14,10 @@ namespace fluidsound::tools {
 struct SynthOptions {
   CommonOptions common;
   std::string input;                 ///< bubble-track file
-  std::string output;                ///< .wav or .flac
+  std::string output;                ///< .wav or .flac, - (stdout), a device or a FIFO
   AudioOutputOptions audio;  ///< --rate, --format, --bits, --normalize, --loudness, --true-peak
   std::optional<double> duration;    ///< s; default: the file's, else until all have decayed
-  std::string report;                ///< report path; default OUT with extension .report.json
+  std::string report;                ///< report path; default OUT.report.json (none for a stream)
   std::string spectrogram;           ///< also draw this PNG, if given
   acoustics::OscillatorModel model;
 };

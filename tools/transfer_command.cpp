@@ -22,6 +22,7 @@
 #include "io/bubble_track_file.h"
 #include "io/frame_surface.h"
 #include "io/input_error.h"
+#include "io/interruption.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
 #include "tools/progress_display.h"
@@ -124,6 +125,7 @@ int runTransferCommand(const TransferOptions& o) {
   std::vector<std::exception_ptr> errors(frames.size());
   for (std::size_t first = 0; first < frames.size(); first += kFramesPerProgressStep) {
     const std::size_t last = std::min(frames.size(), first + kFramesPerProgressStep);
+    io::throwIfInterrupted("transfer frame " + std::to_string(frames[first].first));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 1), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t f = r.begin(); f < r.end(); ++f) {
         try {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "support/special_files.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::io {
@@ -145,6 +146,33 @@ TEST(AtomicFile, ReadOnlyFolderIsAnOutputError) {
     EXPECT_TRUE(message.starts_with((readOnly / "out.txt").string() + ": cannot write")) << message;
     EXPECT_NE(message.find("Permission denied"), std::string::npos) << message;
   }
+}
+
+TEST(AtomicFile, NeverRenamesOntoAFifoOrThroughALinkToNothing) {
+  // Replacing is only for regular files and new names (io/output_file.h): a FIFO is written
+  // through by writeOutputFile, never renamed over; a link to nothing does not make its target.
+  TempFolder folder;
+  const fs::path fifo = folder.path() / "pipe", dangling = folder.path() / "link.txt";
+  ASSERT_TRUE(test::makeFifo(fifo));
+  fs::create_symlink("missing.txt", dangling);
+  EXPECT_THROW(AtomicFile{fifo}, OutputError);
+  EXPECT_THROW(AtomicFile{dangling}, OutputError);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_symlink(dangling));
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"link.txt", "pipe"}));
+}
+
+TEST(AtomicFile, SymlinkTargetIsReplacedAndTheLinkStays) {
+  TempFolder folder;
+  const fs::path target = folder.path() / "real.txt", link = folder.path() / "link.txt";
+  writeText(target, "old");
+  fs::create_symlink("real.txt", link);
+  AtomicFile file(link);
+  EXPECT_EQ(file.targetPath(), fs::canonical(target));
+  writeText(file.temporaryPath(), "new");
+  file.commit();
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(readText(target), "new");
 }
 
 }  // namespace

@@ -171,7 +171,7 @@ TEST(AudioFile, FlacRoundTripIsWithin24BitPrecision) {
   // FLAC has no float samples: the default 32 bits become 24-bit PCM (docs/audio.md).
   const std::string fileName = "render.flac";
   AudioWriteSettings settings;
-  settings.format = audioFormatFromPath(fileName);
+  settings.format = audioFormatFromPath(fileName).value();
   const RoundTrip trip = roundTrip(fileName, settings);
   EXPECT_EQ(trip.format, SF_FORMAT_FLAC | SF_FORMAT_PCM_24);
   EXPECT_EQ(trip.read.sampleRate, 48000.0);
@@ -333,7 +333,11 @@ TEST(AudioFile, FormatFollowsTheFileExtension) {
   EXPECT_EQ(audioFormatFromPath("out/render.flac"), AudioFormat::Flac);
   EXPECT_EQ(audioFormatFromPath("RENDER.FLAC"), AudioFormat::Flac);
   EXPECT_EQ(audioFormatFromPath("render.wav"), AudioFormat::Wav);
-  EXPECT_EQ(audioFormatFromPath("render"), AudioFormat::Wav);
+  EXPECT_EQ(audioFormatFromPath("render.WAV"), AudioFormat::Wav);
+  // No guess: a name libsndfile would not write as WAV or FLAC has no format (the CLI refuses it).
+  EXPECT_EQ(audioFormatFromPath("render"), std::nullopt);
+  EXPECT_EQ(audioFormatFromPath("render.mp3"), std::nullopt);
+  EXPECT_EQ(audioFormatFromPath("render.wav.tmp"), std::nullopt);
 }
 
 }  // namespace

@@ -100,7 +100,7 @@ TEST(AudioOutput, SynthReportsTheCalibratedScaleLoudnessAndChannelNames) {
       runFluidsound({"synth", bubbles.string(), "-o", wav.string(), "--quiet"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json audio =
-      readJson(folder.path() / "three.report.json")["results"]["audio_output"];
+      readJson(folder.path() / "three.wav.report.json")["results"]["audio_output"];
   EXPECT_EQ(audio["scale"], "1.0 = 1 Pa = 94.0 dB SPL");
   EXPECT_EQ(audio["calibrated"], true);
   EXPECT_EQ(audio["gain"], 1.0);
@@ -126,7 +126,7 @@ TEST(AudioOutput, SynthLoudnessTargetUnderATruePeakCeiling) {
                        "--true-peak", "-3", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json audio =
-        readJson(folder.path() / "target.report.json")["results"]["audio_output"];
+        readJson(folder.path() / "target.flac.report.json")["results"]["audio_output"];
     const acoustics::LoudnessMeasurement m = measuredFile(flac);
     ASSERT_TRUE(m.integratedLufs.has_value());
     const bool limited = audio["true_peak_limited"].get<bool>();
@@ -192,7 +192,7 @@ TEST(AudioOutput, ReportAndVersionListEveryLibraryAsAnObject) {
   const CommandOutcome r = runFluidsound(
       {"synth", bubbles.string(), "-o", (folder.path() / "v.wav").string(), "--quiet"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const nlohmann::json versions = readJson(folder.path() / "v.report.json")["versions"];
+  const nlohmann::json versions = readJson(folder.path() / "v.wav.report.json")["versions"];
   ASSERT_TRUE(versions.is_object()) << versions.dump();
   for (const char* name : {"fluidsound", "openvdb", "embree", "tbb", "eigen", "libsndfile",
                            "libebur128", "cairo", "nlohmann_json", "tinyobjloader", "cli11"}) {

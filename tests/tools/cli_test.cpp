@@ -127,7 +127,7 @@ TEST_F(Cli, SynthWritesAudioReportAndSpectrogram) {
                     (folder_ / "out.png").string() + " --quiet");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::exists(folder_ / "out.wav"));
-  EXPECT_TRUE(fs::exists(folder_ / "out.report.json"));
+  EXPECT_TRUE(fs::exists(folder_ / "out.wav.report.json"));
   EXPECT_TRUE(fs::exists(folder_ / "out.png"));
   const Outcome s = run("spectrogram " + (folder_ / "out.wav").string() + " -o " + (folder_ / "again.png").string() +
                     " --log-frequency --quiet");
