@@ -262,6 +262,7 @@ int runStages(const RunOptions& o) {
     const Json& r = synthReport["results"];
     if (r.contains("peak_pascals")) run["peak_pascals"] = r["peak_pascals"];
     if (r.contains("output_peak_dbfs")) run["peak_dbfs"] = r["output_peak_dbfs"];
+    if (r.contains("oscillator_kernel")) run["oscillator_kernel"] = r["oscillator_kernel"];
     if (r.contains("audio_output"))
       run["audio_output"] = r["audio_output"];  // scale, gain, loudness, names
   }

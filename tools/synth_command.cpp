@@ -92,6 +92,8 @@ void addSynthResults(RunReport& report, const SynthOptions& o, const acoustics::
   report.result("duration_seconds", static_cast<double>(r.frames) / settings.sampleRate);
   report.result("channels", static_cast<double>(channels));
   report.result("peak_pascals", r.peakPascals);
+  // The inner loop that ran (acoustics/oscillator_kernel.h): a speed figure says what it measured.
+  report.result("oscillator_kernel", std::string(acoustics::oscillatorKernelName(r.kernel)));
   report.result("gain", w.gain);
   report.result("output_peak_dbfs", w.outputPeakDbfs);
   report.result("clipped_samples", static_cast<double>(w.clippedSamples));

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "acoustics/loudness.h"
+#include "acoustics/oscillator_kernel.h"
 #include "io/audio_file.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
@@ -109,6 +110,22 @@ TEST(AudioOutput, SynthReportsTheCalibratedScaleLoudnessAndChannelNames) {
   EXPECT_NEAR(audio["integrated_loudness_lufs"].get<double>(), *m.integratedLufs, 0.01);
   EXPECT_NEAR(audio["true_peak_dbtp"].get<double>(), m.truePeakDbtp, 0.01);
   EXPECT_EQ(audio["channels"], nlohmann::json::parse(R"(["near", "far", "under & over"])"));
+}
+
+// Claim (issue 17): synth's report names the oscillator kernel that ran, so its
+// oscillator_samples_per_second says what it measured: the widest this CPU runs, as the
+// synthesizer picks without being told (acoustics/oscillator_kernel.h).
+TEST(AudioOutput, SynthReportNamesTheOscillatorKernelThatRan) {
+  const TempFolder folder;
+  const fs::path bubbles = writeText(folder.path() / "b.json", kThreeListeners);
+  const fs::path wav = folder.path() / "k.wav";
+  const CommandOutcome r =
+      runFluidsound({"synth", bubbles.string(), "-o", wav.string(), "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json results = readJson(folder.path() / "k.wav.report.json")["results"];
+  ASSERT_TRUE(results.contains("oscillator_kernel"));
+  EXPECT_EQ(results["oscillator_kernel"].get<std::string>(),
+            acoustics::oscillatorKernelName(acoustics::fastestOscillatorKernel()));
 }
 
 // Claim: --loudness L brings the file to L LUFS (EBU R 128 normalisation) unless the true peak
