@@ -11,7 +11,6 @@
 
 #include "io/input_error.h"
 #include "io/vdb_file_check.h"
-#include "io/vdb_header_check.h"
 
 namespace fluidsound::io {
 
@@ -25,8 +24,7 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
-  requireIntactVdbFile(path);    // OpenVDB trusts the lengths in the file (vdb_file_check.h)
-  requireIntactVdbHeader(path);  // and the delayed-load counts of the header (vdb_header_check.h)
+  requireIntactVdbFile(path);  // OpenVDB trusts the lengths in the file (vdb_file_check.h)
   try {
     openvdb::io::File file(path.string());
     file.open(/*delayLoad=*/false);  // read in full now, in the order requireIntactVdbFile checked

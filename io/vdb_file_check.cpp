@@ -5,9 +5,17 @@
 //   metadata:   int32 count, then per entry string name, string type, uint32 size, bytes
 //   descriptors: int32 count, then per grid string name, string type, string instance parent,
 //               int64 grid, block and end offsets (the next descriptor starts at the end offset)
-//   grid:       at its grid offset, uint32 compression flags, then metadata as above
+//   grid:       at its grid offset, uint32 compression flags, metadata as above, the transform
 //   string:     uint32 length, then the bytes
-// and, for the grid FrameSurface reads (`surface`, a FloatTree 5-4-3), after its metadata
+// A metadata value of a registered fixed-size type (Metadata.h, TypedMetadata<T>::readValue)
+// is read as sizeof(T) bytes whatever its size says, so its size must be that; one of type
+// `__delayedload` (io/DelayedLoadMetadata.cc, readValue) holds
+//   uint32 node count, then the nodes' masks (int8 each) and compressed sizes (int64 each; a size
+//   of 0xffffffff: none), each array as a uint32 size and that many bytes of blosc (a 16-byte
+//   header: version, flags, uint32 uncompressed, block and compressed sizes), or size 0 and the
+//   raw array
+// and OpenVDB allocates what the count, the sizes and the blosc header say before reading them.
+// For the grid FrameSurface reads (`surface`, a FloatTree 5-4-3), after its transform
 // (io/Archive.cc, math/Transform.cc, tree/RootNode.h, InternalNode.h, LeafNode.h,
 // io/Compression.h):
 //   transform:  string map type, then the map's fixed-size values
@@ -39,21 +47,26 @@ constexpr std::int64_t kMagic = 0x56444220;    // " BDV"
 constexpr std::uint32_t kOldestVersion = 222;  // OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION
 constexpr std::uint32_t kNewestVersion = 224;  // OPENVDB_FILE_VERSION_MULTIPASS_IO (OpenVDB 10)
 constexpr std::size_t kUuidBytes = 36;
+constexpr std::int64_t kMaxGrids = 1024;  // more than any frame holds: damage
 
 /// Reads the header's fields in order, each checked against the bytes left before `end`.
 class HeaderReader {
  public:
   explicit HeaderReader(const std::filesystem::path& path)
       : name_(path.string()), in_(path, std::ios::binary) {
-    if (!in_) throw InputError(name_, "", "a readable OpenVDB file", "cannot open it");
-    in_.seekg(0, std::ios::end);
-    size_ = static_cast<std::int64_t>(in_.tellg());
+    std::error_code error;
+    size_ = static_cast<std::int64_t>(std::filesystem::file_size(path, error));
+    if (error || !in_)
+      throw InputError(name_, "", "a readable OpenVDB file",
+                       error ? error.message() : "cannot open it");
     end_ = size_;
-    in_.seekg(0);
   }
 
   std::int64_t size() const { return size_; }
   std::int64_t position() { return static_cast<std::int64_t>(in_.tellg()); }
+  /// The end of the part being read (the file, a grid's header or a metadata value).
+  std::int64_t end() const { return end_; }
+  std::int64_t left() { return end_ - position(); }
   void limitTo(std::int64_t end) { end_ = end; }
   void seek(std::int64_t offset) { in_.seekg(offset); }
 
@@ -113,7 +126,8 @@ class HeaderReader {
     const std::int64_t left = end_ - position();
     if (!in_ || left < bytes)
       fail(field, std::to_string(bytes) + " more bytes",
-           "the end of its part of the file at byte " + std::to_string(end_));
+           "the end of its part of the file at byte " + std::to_string(end_) +
+               " (damaged or truncated)");
   }
 
   std::string name_;
@@ -122,6 +136,94 @@ class HeaderReader {
   std::int64_t end_ = 0;
 };
 
+/// The bytes OpenVDB reads for a value of a registered fixed-size metadata type (openvdb.h
+/// MetaTypes, and the point index types openvdb::initialize adds), or -1 for any other type.
+std::int64_t fixedValueBytes(const std::string& type) {
+  static const std::map<std::string, std::int64_t> bytes{
+      {"bool", 1},    {"float", 4},   {"double", 8},  {"int32", 4},       {"int64", 8},
+      {"vec2i", 8},   {"vec2s", 8},   {"vec2d", 16},  {"vec3i", 12},      {"vec3s", 12},
+      {"vec3d", 24},  {"vec4i", 16},  {"vec4s", 16},  {"vec4d", 32},      {"mat4s", 64},
+      {"mat4d", 128}, {"ptidx32", 4}, {"ptidx64", 8}, {"ptdataidx32", 4}, {"ptdataidx64", 8}};
+  const auto found = bytes.find(type);
+  return found == bytes.end() ? -1 : found->second;
+}
+
+constexpr std::int64_t kBloscHeaderBytes = 16;  // BLOSC_MIN_HEADER_LENGTH
+constexpr std::int64_t kBloscPadBytes = 128;    // io/StreamCompression.h BLOSC_PAD_BYTES
+
+/// One array of a delayed-load value: `nodes` items of `bytesEach` bytes, as a uint32 size and
+/// that many blosc bytes, or size 0 and the raw items (or, when `optional`, size 0xffffffff and
+/// nothing). OpenVDB allocates the size, and the blosc header's uncompressed size, unchecked;
+/// blosc trusts the header's block and compressed sizes.
+void checkDelayedLoadArray(HeaderReader& in, const std::string& field, std::int64_t nodes,
+                           std::int64_t bytesEach, bool optional) {
+  const std::int64_t size = in.number<std::uint32_t>(field + " size");
+  if (optional && size == 0xffffffff) return;
+  const std::int64_t raw = nodes * bytesEach;
+  if (size == 0) return in.skip(field, raw);
+  const std::int64_t left = in.left();
+  if (size < kBloscHeaderBytes || size > left)
+    in.fail(field + " size",
+            "0 (raw) or a blosc block of 16 to " + std::to_string(left) +
+                " bytes (what is left of the value)",
+            std::to_string(size));
+  std::array<std::uint32_t, 4> header{};  // version and flags, uncompressed, block, compressed
+  in.bytes(field + " blosc header", reinterpret_cast<char*>(header.data()), kBloscHeaderBytes);
+  const std::int64_t uncompressed = header[1], block = header[2], compressed = header[3];
+  // io::bloscDecompress accepts the nodes' size or, for 128 bytes or fewer, the padded 128.
+  if (uncompressed != raw && !(uncompressed == kBloscPadBytes && raw <= kBloscPadBytes))
+    in.fail(field + " uncompressed size",
+            "the size of " + std::to_string(nodes) + " nodes (" + std::to_string(raw) + " bytes)",
+            std::to_string(uncompressed));
+  if (block > uncompressed)
+    in.fail(field + " block size",
+            "at most the uncompressed size (" + std::to_string(uncompressed) + " bytes)",
+            std::to_string(block));
+  if (compressed < kBloscHeaderBytes || compressed > size)
+    in.fail(field + " compressed size",
+            "16 to " + std::to_string(size) + " bytes (the block's size)",
+            std::to_string(compressed));
+  in.skip(field + " data", size - kBloscHeaderBytes);
+}
+
+/// A `__delayedload` value (io::DelayedLoadMetadata): the node count, the masks, the compressed
+/// sizes, all within the value (`in` limited to it).
+void checkDelayedLoad(HeaderReader& in, const std::string& field) {
+  const std::int64_t nodes = in.number<std::uint32_t>(field + " node count");
+  // OpenVDB sizes both arrays (1 + 8 bytes per node) by it: a node takes at least a byte of
+  // the file, so a larger count is damage.
+  if (nodes > in.size())
+    in.fail(
+        field + " node count",
+        "a delayed-load node count of at most the file's size (" + std::to_string(in.size()) + ")",
+        std::to_string(nodes));
+  checkDelayedLoadArray(in, field + " masks", nodes, 1, false);
+  checkDelayedLoadArray(in, field + " compressed sizes", nodes, 8, true);
+}
+
+/// One metadata entry's value: a uint32 size within the part read, then the bytes, which must
+/// be what OpenVDB will read for the entry's type.
+void checkMetadataValue(HeaderReader& in, const std::string& field, const std::string& type) {
+  const std::int64_t size = in.number<std::uint32_t>(field + " size");
+  const std::int64_t left = in.left();
+  if (size > left)
+    in.fail(field + " size",
+            "a length within the file (at most " + std::to_string(left) + " bytes left)",
+            std::to_string(size));
+  const std::int64_t fixed = fixedValueBytes(type);
+  if (fixed >= 0 && size != fixed)
+    in.fail(field + " size", std::to_string(fixed) + " bytes (the size of type " + type + ")",
+            std::to_string(size));
+  const std::int64_t valueEnd = in.position() + size;
+  if (type == "__delayedload" && size > 0) {  // OpenVDB reads nothing for an empty one
+    const std::int64_t partEnd = in.end();
+    in.limitTo(valueEnd);
+    checkDelayedLoad(in, field);
+    in.limitTo(partEnd);
+  }
+  in.seek(valueEnd);
+}
+
 /// A metadata block: int32 count, then name, type and sized value per entry.
 void checkMetadata(HeaderReader& in, const std::string& field) {
   // Each entry holds at least two string lengths and a value size.
@@ -129,8 +231,8 @@ void checkMetadata(HeaderReader& in, const std::string& field) {
   for (std::int64_t i = 0; i < entries; ++i) {
     const std::string entry = field + "[" + std::to_string(i) + "]";
     in.string(entry + " name");
-    in.string(entry + " type");
-    in.string(entry + " value");  // uint32 size, then the bytes: the same shape as a string
+    const std::string type = in.string(entry + " type");
+    checkMetadataValue(in, entry + " value", type);
   }
 }
 
@@ -197,10 +299,10 @@ std::int64_t mapBytes(const std::string& type) {
   return -1;
 }
 
-/// The transform, topology and leaf values of the `surface` grid, after its metadata.
-void checkSurfaceTree(HeaderReader& in, const std::string& grid, std::uint32_t compression,
-                      std::int64_t blockOffset, std::int64_t endOffset) {
-  const std::string map = in.string(grid + " transform");
+/// The transform's values, topology and leaf values of the `surface` grid, after its transform's
+/// map type `map`.
+void checkSurfaceTree(HeaderReader& in, const std::string& grid, const std::string& map,
+                      std::uint32_t compression, std::int64_t blockOffset, std::int64_t endOffset) {
   const std::int64_t bytes = mapBytes(map);
   if (bytes < 0)
     in.fail(grid + " transform", "a scale, translation or affine map", "'" + map + "'");
@@ -233,8 +335,8 @@ void checkSurfaceTree(HeaderReader& in, const std::string& grid, std::uint32_t c
     }
 }
 
-/// One grid descriptor and the metadata block at its grid offset (for `surface`, its whole
-/// tree); leaves `in` at the next descriptor.
+/// One grid descriptor, and the metadata block and transform type at its grid offset (for
+/// `surface`, its whole tree); leaves `in` at the next descriptor.
 void checkGrid(HeaderReader& in, std::int64_t index) {
   const std::string grid = "grid " + std::to_string(index);
   const std::string name = in.string(grid + " name");
@@ -260,7 +362,8 @@ void checkGrid(HeaderReader& in, std::int64_t index) {
   in.limitTo(blockOffset);
   const auto compression = in.number<std::uint32_t>(grid + " compression");
   checkMetadata(in, grid + " metadata");
-  if (surface) checkSurfaceTree(in, grid, compression, blockOffset, endOffset);
+  const std::string map = in.string(grid + " transform");  // every grid has one, instances too
+  if (surface) checkSurfaceTree(in, grid, map, compression, blockOffset, endOffset);
   in.limitTo(in.size());
   in.seek(endOffset);
 }
@@ -270,7 +373,7 @@ void checkGrid(HeaderReader& in, std::int64_t index) {
 void requireIntactVdbFile(const std::filesystem::path& path) {
   HeaderReader in(path);
   if (in.number<std::int64_t>("magic number") != kMagic)
-    in.fail("magic number", "an OpenVDB file", "another kind of file");
+    in.fail("magic number", "an OpenVDB file (magic number 0x56444220)", "another kind of file");
   const auto version = in.number<std::uint32_t>("file version");
   if (version < kOldestVersion || version > kNewestVersion)
     in.fail("file version",
@@ -283,6 +386,9 @@ void requireIntactVdbFile(const std::filesystem::path& path) {
   in.skip("UUID", kUuidBytes);
   checkMetadata(in, "metadata");
   const std::int64_t grids = in.count("grid count", 36);  // 3 string lengths, 3 offsets
+  if (grids > kMaxGrids)
+    in.fail("grid count", "a grid count from 0 to " + std::to_string(kMaxGrids),
+            std::to_string(grids));
   for (std::int64_t i = 0; i < grids; ++i) checkGrid(in, i);
 }
 

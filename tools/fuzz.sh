@@ -10,9 +10,6 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-${FUZZ_SECONDS:-60}}
 build="$here/build-fuzz"
 harnesses=(scene bubble_tracks bubble_tracks_fast obj_mesh ply_mesh frame_vdb)
-# Harnesses whose bounded run still finds a known, unfixed crash (tests/fuzz/README.md, "Open
-# finding"): their corpus regression runs, their bounded run is reported but does not fail the step.
-known_open=(frame_vdb)
 # The limits of tests/fuzz/CMakeLists.txt: an input slower than 10 s, a process above 2 GiB or
 # one allocation above 1 GiB is a bug.
 limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024)
@@ -60,9 +57,7 @@ finish() {  # waits for any one run, prints its line
   for name in "${!pid_of[@]}"; do
     if [ "${pid_of[$name]}" = "$done_pid" ]; then
       summary "$name" "${started_at[$name]}" "$(date +%s)"
-      if [ "$status" -ne 0 ] && [[ " ${known_open[*]} " == *" $name "* ]]; then
-        echo "fuzz $name: exit $status: the open finding of tests/fuzz/README.md (not failing the step)" >&2
-      elif [ "$status" -ne 0 ]; then
+      if [ "$status" -ne 0 ]; then
         failed+=("$name")
         echo "fuzz $name: exit $status; the end of build-fuzz/fuzz/$name.log:" >&2
         tail -n 30 "$build/fuzz/$name.log" >&2

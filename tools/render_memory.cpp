@@ -9,16 +9,11 @@
 #include "acoustics/instantaneous_frequency.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
+#include "io/memory_text.h"
 #include "io/render_limits.h"
 
 namespace fluidsound::tools {
 namespace {
-
-std::string gibibytes(double bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-  return text;
-}
 
 /// The most samples this machine may render: the fixed limit, or less where memory is smaller.
 double sampleLimit(std::uint64_t availableBytes) {
@@ -35,7 +30,7 @@ std::string expectedText(std::uint64_t availableBytes) {
                 "within this machine's %s of memory)",
                 sampleLimit(availableBytes), io::kRenderBytesPerSample,
                 availableBytes == 0 ? "unknown amount"
-                                    : gibibytes(static_cast<double>(availableBytes)).c_str());
+                                    : io::gibibytes(static_cast<double>(availableBytes)).c_str());
   return text;
 }
 
@@ -45,7 +40,7 @@ std::string foundText(double seconds, double sampleRate, std::size_t channels) {
       text, sizeof text, "%.6g s × %.6g Hz × %zu %s = %.4g samples (%s)", seconds, sampleRate,
       channels, channels == 1 ? "channel" : "channels",
       io::renderSamples(seconds, sampleRate, channels),
-      gibibytes(io::renderSamples(seconds, sampleRate, channels) * io::kRenderBytesPerSample)
+      io::gibibytes(io::renderSamples(seconds, sampleRate, channels) * io::kRenderBytesPerSample)
           .c_str());
   return text;
 }

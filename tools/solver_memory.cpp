@@ -8,16 +8,10 @@
 #include <CLI/CLI.hpp>
 
 #include "io/input_error.h"
+#include "io/memory_text.h"
 #include "sim/grid.h"
 
 namespace fluidsound::tools {
-namespace {
-std::string gibibytes(double bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-  return text;
-}
-}  // namespace
 
 std::uint64_t physicalMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
@@ -32,10 +26,12 @@ void requireMemoryForGrid(const sim::Scene& scene, const std::string& sceneFile,
   const double needed = static_cast<double>(cells) * kSolverBytesPerCell;
   if (needed <= static_cast<double>(availableBytes)) return;
   char found[160];
-  std::snprintf(found, sizeof found, "%g m: %d x %d x %d = %.3g cells, at least %s for the solver's grid", scene.domain.cell,
-                grid.cells[0], grid.cells[1], grid.cells[2], static_cast<double>(cells), gibibytes(needed).c_str());
+  std::snprintf(found, sizeof found,
+                "%g m: %d x %d x %d = %.3g cells, at least %s for the solver's grid",
+                scene.domain.cell, grid.cells[0], grid.cells[1], grid.cells[2],
+                static_cast<double>(cells), io::gibibytes(needed).c_str());
   const std::string expected = "a cell size whose grid fits in this machine's " +
-                               gibibytes(static_cast<double>(availableBytes)) + " of memory";
+                               io::gibibytes(static_cast<double>(availableBytes)) + " of memory";
   if (cell) throw CLI::ValidationError("--cell: expected " + expected + ", found " + found);
   throw io::InputError(sceneFile, "domain.cell", expected, found);
 }
