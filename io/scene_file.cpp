@@ -404,7 +404,9 @@ sim::Scene readScene(const std::filesystem::path& path) {
 
 sim::Scene withCellSize(sim::Scene scene, double cell, const std::string& source) {
   scene.domain.cell = cell;
-  std::string text = formatNumber(cell);  // shortest round trip; "0.0" -> "0", as typed
+  // Shortest round trip ("0.0" -> "0", as typed); JSON has no NaN or infinity (it would say
+  // "null"), so those as printf writes them.
+  std::string text = std::isfinite(cell) ? formatNumber(cell) : roundedNumber(cell, 6);
   if (text.ends_with(".0")) text.resize(text.size() - 2);
   requireValidCellSize(scene.domain, text,
                        [&](const std::string& expected, const std::string& found) {

@@ -121,7 +121,9 @@ std::string shortNumber(double value) {
 
 /// "[x, y, z]", each to 6 significant digits.
 std::string vectorText(const Vec3& v) {
-  return "[" + shortNumber(v[0]) + ", " + shortNumber(v[1]) + ", " + shortNumber(v[2]) + "]";
+  std::string text = "[";
+  for (std::size_t a = 0; a < 3; ++a) text.append(a > 0 ? ", " : "").append(shortNumber(v[a]));
+  return text + "]";
 }
 
 /// The disk of an emitter against the domain: a radius beyond the domain's diagonal is no nozzle
