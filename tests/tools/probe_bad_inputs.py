@@ -31,8 +31,8 @@ AWKWARD_NUMBERS = [0, -1, 0.5, 1e308, -1e308, 5e-324, 1e-300, 44100.5, 184467440
 AWKWARD_OTHERS = ["x", "", None, True, [], {}, [1, 2], [0, 0, 0, 0]]
 QUICK_NUMBERS = [0, -1, 0.5, 1e308, 5e-324, 18446744073709551616]
 QUICK_OTHERS = ["x", None, []]
-QUICK_SCENE_STEP = 4
-QUICK_BUBBLES_STEP = 3
+QUICK_SCENE_STEP = 2
+QUICK_BUBBLES_STEP = 2
 # Every (document, JSON path, value) a full run has found (exit 5, a signal or over the time
 # limit), run in every quick run whether or not the sample above holds it.
 QUICK_REGRESSIONS = [
