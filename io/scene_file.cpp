@@ -52,6 +52,11 @@ constexpr double kDefaultListenerHeight = 0.5;
 /// Output frames a scene may ask for (duration × fps): 9 h at 30 fps; far beyond a shot, and
 /// frame numbers stay well inside an int.
 constexpr int kMaxFrames = 1000000;
+/// Frames per second: a frame every millisecond at most. The frames are the liquid's state for the
+/// bubble tracker and for the eye, not audio (synthesis runs at audio.sample_rate between them);
+/// 44 100 fps asked for a whole VDB and PLY frame every 23 µs (4410 frames for 0.1 s of a 4 cm
+/// tank, minutes of work for nothing the sound can use).
+constexpr double kMaxFps = 1000.0;
 
 /// Largest |gravity| [m/s²]: 100 g, beyond any centrifuge a liquid sound would be recorded in.
 constexpr double kMaxGravity = 1000.0;
@@ -136,7 +141,7 @@ class SceneReader {
     if (const json* items = check_.optionalArray(root, "", "emitters", "an array of emitters")) {
       for (std::size_t i = 0; i < items->size(); ++i) {
         scene.emitters.push_back(
-            readEmitter(check_, (*items)[i], elementPath("emitters", i), scene.time));
+            readEmitter(check_, (*items)[i], elementPath("emitters", i), scene.time, scene.domain));
       }
     }
     if (const json* items = check_.optionalArray(root, "", "solids", "an array of solids")) {
@@ -216,8 +221,9 @@ class SceneReader {
     sim::TimeSettings t;
     t.duration =
         check_.requiredNumber(object, path, "duration", "a number > 0 (seconds)", positive);
-    t.fps = check_.optionalNumber(object, path, "fps", t.fps, "a number > 0 (frames per second)",
-                                  positive);
+    t.fps = check_.optionalNumber(object, path, "fps", t.fps,
+                                  "a number > 0 and <= 1000 (frames per second)",
+                                  [](double v) { return v > 0 && v <= kMaxFps; });
     t.cfl = check_.optionalNumber(object, path, "cfl", t.cfl, "a number > 0 (cells per substep)",
                                   positive);
     const double frames = t.duration * t.fps;
@@ -398,7 +404,9 @@ sim::Scene readScene(const std::filesystem::path& path) {
 
 sim::Scene withCellSize(sim::Scene scene, double cell, const std::string& source) {
   scene.domain.cell = cell;
-  std::string text = formatNumber(cell);  // shortest round trip; "0.0" -> "0", as typed
+  // Shortest round trip ("0.0" -> "0", as typed); JSON has no NaN or infinity (it would say
+  // "null"), so those as printf writes them.
+  std::string text = std::isfinite(cell) ? formatNumber(cell) : roundedNumber(cell, 6);
   if (text.ends_with(".0")) text.resize(text.size() - 2);
   requireValidCellSize(scene.domain, text,
                        [&](const std::string& expected, const std::string& found) {

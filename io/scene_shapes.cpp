@@ -112,6 +112,49 @@ sim::PathKey pathKey(const JsonValidator& check, const json& value, const std::s
   return key;
 }
 
+/// A derived number for a message, to 6 significant digits.
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+/// "[x, y, z]", each to 6 significant digits.
+std::string vectorText(const Vec3& v) {
+  std::string text = "[";
+  for (std::size_t a = 0; a < 3; ++a) text.append(a > 0 ? ", " : "").append(shortNumber(v[a]));
+  return text + "]";
+}
+
+/// The disk of an emitter against the domain: a radius beyond the domain's diagonal is no nozzle
+/// of this domain (its particles grow as π r², clipped to the domain or not: a 7 m disk over a 4 cm
+/// box of 1 cm cells draws 3·10⁷ of them in 0.05 s at 0.5 m/s), and a disk that lies wholly
+/// outside the domain pours nothing into it. "Wholly
+/// outside": its axis-aligned bounding box (half-width r √(1 − n_a²) along axis a) misses the
+/// domain box on some axis (touching counts as meeting).
+void requireDiskInDomain(const JsonValidator& check, const json& disk, const std::string& diskPath,
+                         const sim::Emitter& e, const sim::Domain& domain) {
+  Vec3 extent{};
+  for (std::size_t a = 0; a < 3; ++a) extent[a] = domain.max[a] - domain.min[a];
+  const double diagonal = std::hypot(extent[0], extent[1], extent[2]);
+  if (!(e.radius <= diagonal)) {
+    check.fail(
+        memberPath(diskPath, "radius"),
+        "a number > 0 and at most the domain's diagonal, " + shortNumber(diagonal) + " (metres)",
+        describe(disk["radius"]));
+  }
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double halfWidth = e.radius * std::sqrt(std::max(0.0, 1.0 - e.normal[a] * e.normal[a]));
+    if (e.center[a] + halfWidth >= domain.min[a] && e.center[a] - halfWidth <= domain.max[a])
+      continue;
+    check.fail(memberPath(diskPath, "center"),
+               "a disk that meets the domain " + vectorText(domain.min) + " to " +
+                   vectorText(domain.max) + " (metres; the disk of radius " +
+                   shortNumber(e.radius) + " lies wholly outside it)",
+               vectorText(e.center));
+  }
+}
+
 }  // namespace
 
 void requireOrdered(const JsonValidator& check, const json& box, const std::string& path,
@@ -149,7 +192,7 @@ sim::LiquidRegion readLiquidRegion(const JsonValidator& check, const json& item,
 }
 
 sim::Emitter readEmitter(const JsonValidator& check, const json& item, const std::string& path,
-                         const sim::TimeSettings& time) {
+                         const sim::TimeSettings& time, const sim::Domain& domain) {
   check.requireObject(item, path, "an object with disk and speed");
   check.rejectUnknownKeys(item, path, {"disk", "speed", "start", "end"});
   sim::Emitter e;
@@ -160,6 +203,7 @@ sim::Emitter readEmitter(const JsonValidator& check, const json& item, const std
   e.center = check.requiredVector(disk, diskPath, "center", "metres");
   e.normal = unitDirection(check, disk, diskPath, "normal");
   e.radius = check.requiredNumber(disk, diskPath, "radius", "a number > 0 (metres)", positive);
+  requireDiskInDomain(check, disk, diskPath, e, domain);
   e.speed = check.requiredNumber(item, path, "speed",
                                  "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)",
                                  [](double v) { return v > 0 && v <= kMaxLiquidSpeed; });

@@ -30,9 +30,12 @@ sim::LiquidRegion readLiquidRegion(const JsonValidator& check, const nlohmann::j
 ///        [m]), a speed [m/s], a start [s] (default 0) and an end [s] (default time.duration).
 /// @param path  the item's JSON path (`emitters[0]`)
 /// @param time  the scene's time settings, for the default end
+/// @param domain  the scene's domain: the disk's radius is at most its diagonal and the disk
+///                meets it (docs/scene.md, emitters)
 /// @throws InputError at the first problem
 sim::Emitter readEmitter(const JsonValidator& check, const nlohmann::json& item,
-                         const std::string& path, const sim::TimeSettings& time);
+                         const std::string& path, const sim::TimeSettings& time,
+                         const sim::Domain& domain);
 
 /// @brief One item of `solids`: exactly one shape, a scale factor (default 1), a translation
 ///        [m], a rotation [degrees about x, y, z] and a path of keys {t [s], translate [m]} in

@@ -2,6 +2,7 @@
 #include "sim/cell_interpolation.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fluidsound::sim {
 
@@ -14,7 +15,9 @@ CellCentreStencil::CellCentreStencil(const Array3f& field, const GridGeometry& g
     const double x = g[a] - 0.5;  // centre-aligned coordinate
     inside_[a] = x > 0.0 && x < top;
     const double c = std::clamp(x, 0.0, top);
-    base[a] = std::min(static_cast<int>(c), std::max(grid.cells[a] - 2, 0));
+    // A NaN passes the clamp and must not be cast to int (undefined; an index far out of the
+    // array): cell 0, and the NaN fraction makes the value NaN.
+    base[a] = std::isnan(c) ? 0 : std::min(static_cast<int>(c), std::max(grid.cells[a] - 2, 0));
     next[a] = std::min(base[a] + 1, grid.cells[a] - 1);
     frac_[a] = c - base[a];
   }

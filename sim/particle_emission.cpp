@@ -19,6 +19,15 @@ void tangentBasis(const Vec3& n, Vec3& u, Vec3& v) {
   for (double& c : u) c /= length;
   v = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
 }
+
+/// Whether x lies in the grid's box (its faces included).
+bool insideGrid(const GridGeometry& grid, const Vec3& x) {
+  for (int a = 0; a < 3; ++a) {
+    const double lo = grid.origin[a], hi = grid.origin[a] + grid.cells[a] * grid.cellSize;
+    if (!(x[a] >= lo && x[a] <= hi)) return false;
+  }
+  return true;
+}
 }  // namespace
 
 double emittedVolume(const Emitter& emitter, double a, double b) {
@@ -51,6 +60,7 @@ std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterS
     for (int a = 0; a < 3; ++a)
       x[a] = emitter.center[a] + along * emitter.normal[a] + radius * (std::cos(angle) * u[a] + std::sin(angle) * v[a]);
     ++state.emitted;
+    if (!insideGrid(grid, x)) continue;  // the part of the disk (or the flow) beyond the domain
     if (interpolateNodes(solidNodes, grid, x) <= 0.0f) continue;
     const float s = static_cast<float>(emitter.speed);
     particles.push({static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2])},

@@ -24,8 +24,9 @@ struct EmitterState {
 ///        volume h³ (a running fraction carries over, so the count over any run matches the flux
 ///        to within one particle). Each particle leaves the disk at a uniformly drawn instant and
 ///        point of the disk and has travelled speed × (t1 − instant) along the normal by t1; its
-///        velocity is speed × normal. Particles that would start inside a solid are dropped (and
-///        counted as emitted: the nozzle is blocked there).
+///        velocity is speed × normal. Particles that would start inside a solid or outside the
+///        grid's box are dropped (and counted as emitted: the nozzle is blocked there, or pours
+///        beyond the domain), so every particle appended lies in the domain.
 /// @param seed          the scene seed; `emitterIndex` separates the emitters' random streams
 /// @return particles appended
 std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterState& state, double t0, double t1,

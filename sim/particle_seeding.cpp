@@ -48,7 +48,9 @@ float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec
   double f[3];
   for (int a = 0; a < 3; ++a) {
     const double c = std::clamp(g[a], 0.0, static_cast<double>(nodes.size()[a] - 1));
-    i[a] = std::min(static_cast<int>(c), nodes.size()[a] - 2);
+    // NaN passes the clamp; casting it to int is undefined (it gave INT_MIN and a read far out of
+    // the array): node 0 instead, and the NaN weight makes the result NaN.
+    i[a] = std::isnan(c) ? 0 : std::min(static_cast<int>(c), nodes.size()[a] - 2);
     f[a] = c - i[a];
   }
   double v = 0.0;

@@ -30,7 +30,8 @@ double regionDistance(const LiquidRegion& region, const Vec3& p);
 /// @throws std::invalid_argument if the mesh's distance was not loaded (io::loadSceneMeshes)
 double meshDistance(const MeshFile& mesh, const Vec3& p);
 
-/// @brief Trilinear interpolation of a node-sampled field at world position p.
+/// @brief Trilinear interpolation of a node-sampled field at world position p (clamped to the
+///        grid; a NaN coordinate gives NaN, never a read outside the array).
 float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec3& p);
 
 }  // namespace fluidsound::sim

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tools/command_options.h"
+#include "tools/number_checks.h"
 #include "tools/run_report.h"
 
 namespace fluidsound::tools {
@@ -33,23 +34,23 @@ std::string scaleText(double gain) {
 
 void addAudioOutputOptions(CLI::App& c, AudioOutputOptions& o) {
   c.add_option("--rate", o.sampleRate, "sample rate in Hz (default: the bubble file's sample_rate)")
-      ->check(CLI::Range(8000.0, 768000.0));
+      ->check(finiteRange(8000.0, 768000.0));
   c.add_option("--format", o.format, "wav or flac (default: from the output's extension; WAV for -, a device or a FIFO)")
       ->check(CLI::IsMember({"wav", "flac"}, CLI::ignore_case));
   c.add_option("--bits", o.bits, "bits per sample: 32 (float), 24 or 16 (PCM with TPDF dither)")
       ->check(CLI::IsMember({16, 24, 32}));
   CLI::Option* normalize = c.add_option("--normalize", o.normalizeDbfs,
                                         "scale so the peak is at this level, dBFS (e.g. -1)")
-                               ->check(CLI::Range(-120.0, 0.0));
+                               ->check(finiteRange(-120.0, 0.0));
   CLI::Option* loudness = c.add_option("--loudness", o.loudnessLufs,
                                        "scale to this integrated loudness, LUFS (EBU R 128: -23), "
                                        "under the --true-peak ceiling")
-                              ->check(CLI::Range(-70.0, 0.0))
+                              ->check(finiteRange(-70.0, 0.0))
                               ->excludes(normalize);
   c.add_option(
        "--true-peak", o.truePeakDbtp,
        "with --loudness: lower the gain so the true peak stays at or below this, dBTP (default -1)")
-      ->check(CLI::Range(-70.0, 0.0))
+      ->check(finiteRange(-70.0, 0.0))
       ->needs(loudness);
 }
 

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "io/output_file.h"
+#include "tools/number_checks.h"
 
 namespace fluidsound::tools {
 
@@ -39,10 +40,10 @@ void addOscillatorModelOptions(CLI::App& command, acoustics::OscillatorModel& mo
       ->transform(CLI::CheckedTransformer(excitation, CLI::ignore_case));
   command.add_option("--displacement", model.initialDisplacement,
                      "initial radial displacement epsilon for --excitation displacement")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
   command.add_flag("--chirp", model.chirp, "van den Doel rising pitch f0 (1 + xi beta t)");
   command.add_option("--chirp-rise", model.chirpRiseFactor, "van den Doel rise factor xi (default 0.1)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finiteNonNegative());
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include "io/output_file.h"
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
+#include "tools/number_checks.h"
 
 namespace fluidsound::tools {
 
@@ -19,12 +20,12 @@ CLI::App* addSpectrogramCommand(CLI::App& app, SpectrogramOptions& o) {
   c->add_option("-o,--output", o.output, "output PNG; - = standard output")->required();
   c->add_flag("--log-frequency", o.settings.logFrequency, "logarithmic frequency axis");
   c->add_option("--min-frequency", o.settings.minFrequency, "lower edge of a log axis, Hz")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
   c->add_option("--window", o.settings.windowSamples, "FFT window length, samples")
       ->check(CLI::Range(64, 65536));
   c->add_option("--hop", o.settings.hopSamples, "step between windows, samples")->check(CLI::Range(1, 65536));
   c->add_option("--range", o.settings.dynamicRangeDb, "dynamic range of the colours, dB")
-      ->check(CLI::Range(10.0, 200.0));
+      ->check(finiteRange(10.0, 200.0));
   c->add_option("--width", o.settings.width, "image width, px")->check(CLI::Range(200, 10000));
   c->add_option("--height", o.settings.height, "image height, px")->check(CLI::Range(150, 10000));
   c->add_option("--channel", o.settings.channel, "channel to draw (0-based; default: mean of all)")

@@ -10,13 +10,14 @@
 #include "acoustics/validation.h"
 #include "io/text_file.h"
 #include "tools/progress_display.h"
+#include "tools/number_checks.h"
 #include "tools/run_report.h"
 
 namespace fluidsound::tools {
 
 CLI::App* addValidateCommand(CLI::App& app, ValidateOptions& o) {
   CLI::App* c = app.add_subcommand("validate", "analytic bubble-acoustics report; exit 1 on any failure");
-  c->add_option("--rate", o.sampleRate, "sample rate in Hz (default 48000)")->check(CLI::Range(44100.0, 192000.0));
+  c->add_option("--rate", o.sampleRate, "sample rate in Hz (default 48000)")->check(finiteRange(44100.0, 192000.0));
   c->add_option("--report", o.report, "also write the table as a report JSON");
   addOscillatorModelOptions(*c, o.model);
   addCommonOptions(*c, o.common);

@@ -5,6 +5,7 @@
 // already in scene_file_errors_test.cpp are not repeated here.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -78,7 +79,8 @@ const std::vector<FieldCase> kFieldCases = {
      R"(one of "-x", "+x", "-y", "+y", "-z", "+z")", R"("-X")"},
 
     // ---- gravity --------------------------------------------------------------------------------
-    // ---- bubbles: lengths in cells and the rate, bounded (1e308 crashed and hung the model) ------
+    // ---- bubbles: lengths in cells and the rate, bounded (1e308 crashed and hung the model)
+    // ------
     {"bubbles_band_cells_huge", "/bubbles", R"({"band_cells": 1e308})", "bubbles.band_cells",
      "a number > 0 and <= 64 (cells)", "1e+308"},
     {"bubbles_entrainment_depth_cells_huge", "/bubbles", R"({"entrainment_depth_cells": 1e308})",
@@ -87,8 +89,8 @@ const std::vector<FieldCase> kFieldCases = {
      "a number >= 0 and <= 64 (cells)", "65"},
     {"bubbles_rate_huge", "/bubbles", R"({"rate": 1e308})", "bubbles.rate",
      "a number >= 0 and <= 10000 (creation attempts per second per unit potential)", "1e+308"},
-    {"gravity_huge", "/gravity", "[0, -1e30, 0]", "gravity", "an acceleration of at most 1000 m/s^2 (about 100 g)",
-     "|g| = 1e+30 m/s^2"},
+    {"gravity_huge", "/gravity", "[0, -1e30, 0]", "gravity",
+     "an acceleration of at most 1000 m/s^2 (about 100 g)", "|g| = 1e+30 m/s^2"},
     {"gravity_string", "/gravity", R"("down")", "gravity", vector3("m/s^2"), R"("down")"},
     {"gravity_four_values", "/gravity", "[0, -9.8, 0, 0]", "gravity", vector3("m/s^2"),
      "an array of 4 values"},
@@ -103,23 +105,27 @@ const std::vector<FieldCase> kFieldCases = {
     {"time_duration_zero", "/time/duration", "0", "time.duration", "a number > 0 (seconds)", "0"},
     {"time_duration_string", "/time/duration", R"("2")", "time.duration", "a number > 0 (seconds)",
      R"("2")"},
-    {"time_too_many_frames", "/time/fps", "1e300", "time", "duration × fps ≤ 1000000 frames",
-     "2e+300 frames"},
-    {"time_fps_negative", "/time/fps", "-30", "time.fps", "a number > 0 (frames per second)",
-     "-30"},
-    {"time_fps_string", "/time/fps", R"("60")", "time.fps", "a number > 0 (frames per second)",
-     R"("60")"},
+    {"time_too_many_frames", "/time/duration", "1e300", "time", "duration × fps ≤ 1000000 frames",
+     "6e+301 frames"},
+    {"time_fps_negative", "/time/fps", "-30", "time.fps",
+     "a number > 0 and <= 1000 (frames per second)", "-30"},
+    {"time_fps_string", "/time/fps", R"("60")", "time.fps",
+     "a number > 0 and <= 1000 (frames per second)", R"("60")"},
+    {"time_fps_above_limit", "/time/fps", "44100.5", "time.fps",
+     "a number > 0 and <= 1000 (frames per second)", "44100.5"},
     {"time_cfl_zero", "/time/cfl", "0", "time.cfl", "a number > 0 (cells per substep)", "0"},
     {"time_cfl_negative", "/time/cfl", "-1", "time.cfl", "a number > 0 (cells per substep)", "-1"},
     {"time_cfl_string", "/time/cfl", R"("1")", "time.cfl", "a number > 0 (cells per substep)",
      R"("1")"},
     {"time_cfl_tiny", "/time/cfl", "1e-12", "time.cfl",
      "at most 10000 substeps per frame (fastest speed / (time.cfl × domain.cell × time.fps))",
-     "2.05e+13 substeps: up to 6.144 m/s (2 from emitters and liquid velocity, 4.144 from gravity over the domain) / "
+     "2.05e+13 substeps: up to 6.144 m/s (2 from emitters and liquid velocity, 4.144 from gravity "
+     "over the domain) / "
      "(1e-12 × 0.005 m × 60 fps)"},
     {"time_fps_tiny", "/time/fps", "0.001", "time.fps",
      "at most 10000 substeps per frame (fastest speed / (time.cfl × domain.cell × time.fps))",
-     "4.91e+05 substeps: up to 6.144 m/s (2 from emitters and liquid velocity, 4.144 from gravity over the domain) / "
+     "4.91e+05 substeps: up to 6.144 m/s (2 from emitters and liquid velocity, 4.144 from gravity "
+     "over the domain) / "
      "(2.5 × 0.005 m × 0.001 fps)"},
     {"time_duration_audio_too_long", "/time", R"({"duration": 30000, "fps": 30})", "time.duration",
      "a duration whose audio (duration × audio.sample_rate × listeners) is at most 2^31 samples",
@@ -168,7 +174,8 @@ const std::vector<FieldCase> kFieldCases = {
     {"liquid_mesh_number", "/liquid/0", R"({"mesh": 7})", "liquid[0].mesh", kMeshPath, "7"},
     {"liquid_mesh_empty", "/liquid/0", R"({"mesh": ""})", "liquid[0].mesh", kMeshPath, R"("")"},
     {"liquid_velocity_huge", "/liquid/1/velocity", "[0, -1e6, 0]", "liquid[1].velocity",
-     "a velocity of at most 1000 m/s (two thirds of the speed of sound in water)", "|v| = 1000000.0 m/s"},
+     "a velocity of at most 1000 m/s (two thirds of the speed of sound in water)",
+     "|v| = 1000000.0 m/s"},
     {"liquid_velocity_two_values", "/liquid/1/velocity", "[0, -2]", "liquid[1].velocity",
      vector3("m/s"), "an array of 2 values"},
     {"liquid_velocity_string", "/liquid/1/velocity", R"("down")", "liquid[1].velocity",
@@ -206,12 +213,31 @@ const std::vector<FieldCase> kFieldCases = {
      "a number > 0 (metres)", "0"},
     {"emitter_disk_radius_string", "/emitters/0/disk/radius", R"("4mm")", "emitters[0].disk.radius",
      "a number > 0 (metres)", R"("4mm")"},
+    {"emitter_disk_radius_beyond_domain", "/emitters/0/disk/radius", "7.0",
+     "emitters[0].disk.radius", "a number > 0 and at most the domain's diagonal, 0.678233 (metres)",
+     "7.0"},
+    {"emitter_disk_center_far_outside", "/emitters/0/disk/center/1", "1e308",
+     "emitters[0].disk.center",
+     "a disk that meets the domain [0, 0, 0] to [0.6, 0.3, 0.1] (metres; the disk of radius 0.004 "
+     "lies "
+     "wholly outside it)",
+     "[0.3, 1e+308, 0.05]"},
+    {"emitter_disk_center_just_outside", "/emitters/1/disk/center/2", "-0.0013",
+     "emitters[1].disk.center",
+     "a disk that meets the domain [0, 0, 0] to [0.6, 0.3, 0.1] (metres; the disk of radius 0.002 "
+     "lies "
+     "wholly outside it)",
+     "[0.1, 0.25, -0.0013]"},
     {"emitter_disk_unknown_key", "/emitters/0/disk/diameter", "0.008", "emitters[0].disk.diameter",
      "one of center, normal, radius", "an unknown key"},
-    {"emitter_speed_zero", "/emitters/0/speed", "0", "emitters[0].speed", "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", "0"},
-    {"emitter_speed_negative", "/emitters/1/speed", "-0.5", "emitters[1].speed", "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", "-0.5"},
-    {"emitter_speed_string", "/emitters/0/speed", R"("fast")", "emitters[0].speed", "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", R"("fast")"},
-    {"emitter_speed_huge", "/emitters/0/speed", "1e6", "emitters[0].speed", "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", "1000000.0"},
+    {"emitter_speed_zero", "/emitters/0/speed", "0", "emitters[0].speed",
+     "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", "0"},
+    {"emitter_speed_negative", "/emitters/1/speed", "-0.5", "emitters[1].speed",
+     "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", "-0.5"},
+    {"emitter_speed_string", "/emitters/0/speed", R"("fast")", "emitters[0].speed",
+     "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", R"("fast")"},
+    {"emitter_speed_huge", "/emitters/0/speed", "1e6", "emitters[0].speed",
+     "a number > 0 and <= 1000 (m/s; two thirds of the speed of sound in water)", "1000000.0"},
     {"emitter_start_negative", "/emitters/0/start", "-0.1", "emitters[0].start",
      "a number >= 0 (seconds)", "-0.1"},
     {"emitter_start_string", "/emitters/0/start", R"("0")", "emitters[0].start",
@@ -346,9 +372,11 @@ const std::vector<FieldCase> kFieldCases = {
      "solver.max_pressure_iterations", "an integer from 1 to 2147483647", R"("1000")"},
     {"solver_surface_unknown", "/solver/surface", R"("grid")", "solver.surface",
      R"("particles" or "level_set")", R"("grid")"},
-    {"solver_surface_number", "/solver/surface", "1", "solver.surface", R"("particles" or "level_set")", "1"},
+    {"solver_surface_number", "/solver/surface", "1", "solver.surface",
+     R"("particles" or "level_set")", "1"},
     {"solver_unknown_key", "/solver/tolerance", "1e-6", "solver.tolerance",
-     "one of transfer, surface, flip_ratio, particles_per_cell, pressure_tolerance, max_pressure_iterations",
+     "one of transfer, surface, flip_ratio, particles_per_cell, pressure_tolerance, "
+     "max_pressure_iterations",
      "an unknown key"},
 };
 
@@ -375,6 +403,24 @@ INSTANTIATE_TEST_SUITE_P(SceneFieldErrors, SceneField, ::testing::ValuesIn(kFiel
 // Each row changes one field of fullScene(), which must be valid as it stands.
 TEST(SceneFieldErrors, BaseSceneIsValid) {
   EXPECT_NO_THROW(parseScene(fullScene().dump(), "tank.json"));
+}
+
+// Claim: the emitter's domain rule refuses only a disk wholly outside the domain: a tilted disk
+// (normal [3, 0, 4], radius 2 mm, so 1.2 mm of half-width along z) centred 1.1 mm beyond the z = 0
+// face still reaches into it and is accepted, as is a radius equal to the domain's diagonal and
+// an fps of exactly 1000. Reference: docs/scene.md, emitters and time (the rows above refuse
+// 1.3 mm beyond, a radius of 7 m and 44100.5 fps).
+TEST(SceneFieldErrors, EmitterDiskReachingIntoTheDomainAndTheLimitsThemselvesAreAccepted) {
+  nlohmann::json scene = fullScene();
+  scene["emitters"][1]["disk"]["center"][2] = -0.0011;
+  EXPECT_NO_THROW(parseScene(scene.dump(), "tank.json"));
+  scene = fullScene();
+  scene["emitters"][0]["disk"]["radius"] = std::hypot(0.6, 0.3, 0.1);
+  EXPECT_NO_THROW(parseScene(scene.dump(), "tank.json"));
+  scene = fullScene();
+  scene["time"]["fps"] = 1000;
+  scene["time"]["duration"] = 0.5;
+  EXPECT_NO_THROW(parseScene(scene.dump(), "tank.json"));
 }
 
 }  // namespace

@@ -161,7 +161,8 @@ TEST(SceneFile, NegativeDurationIsNamed) {
 TEST(SceneFile, NonPositiveFpsIsNamed) {
   json document = minimalScene();
   document["time"]["fps"] = 0;
-  expectError(parseError(document.dump()), "time.fps", "a number > 0 (frames per second), found 0");
+  expectError(parseError(document.dump()), "time.fps",
+              "a number > 0 and <= 1000 (frames per second), found 0");
 }
 
 TEST(SceneFile, NonIntegerSeedIsNamed) {

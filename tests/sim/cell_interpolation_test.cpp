@@ -70,5 +70,25 @@ TEST(CellInterpolation, OutsideTheCentresTheFieldIsConstantAlongTheClampedAxis) 
   EXPECT_NEAR(clamped.gradient()[2], a[2], 2e-5);
 }
 
+TEST(CellInterpolation, ANanCoordinateGivesNanNotAReadOutsideTheArray) {
+  // Claim: a NaN coordinate (a position that blew up) passes std::clamp; it gives a NaN value and
+  // never an index outside the field (casting NaN to int gave INT_MIN, a read far before the
+  // array), while ±inf is clamped to the outermost centres like any far position.
+  // Reference: NaN propagates; the clamped value of the test above. Tolerance: as above.
+  const GridGeometry g = smallGrid();
+  const Array3f f = linearField(g, {1.5, -2.0, 3.0}, 0.25);
+  const Vec3 inside{g.origin[0] + 0.031, g.origin[1] + 0.027, g.origin[2] + 0.044};
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 p = inside;
+    p[axis] = std::nan("");
+    EXPECT_TRUE(std::isnan(interpolateCellCentres(f, g, p))) << "axis " << axis;
+    p[axis] = HUGE_VAL;
+    Vec3 edge = inside;
+    edge[axis] = g.origin[axis] + g.cellSize * (g.cells[axis] - 0.5);
+    EXPECT_NEAR(interpolateCellCentres(f, g, p), interpolateCellCentres(f, g, edge), 1e-12)
+        << "axis " << axis;
+  }
+}
+
 }  // namespace
 }  // namespace fluidsound::sim

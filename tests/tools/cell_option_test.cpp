@@ -69,6 +69,9 @@ struct BadCell {
 const BadCell kBadCells[] = {
     {"zero", "0", "--cell: expected a number > 0 (metres), found 0"},
     {"negative", "-0.01", "--cell: expected a number > 0 (metres), found -0.01"},
+    {"nan", "nan", "--cell: expected a number > 0 (metres), found nan"},
+    {"infinite", "inf", "--cell: expected a number > 0 (metres), found inf"},
+    {"overflowing", "1e999", "--cell: expected a number > 0 (metres), found inf"},
     {"not_dividing", "0.007",
      "--cell: expected a cell size (metres) that divides the extent along x (0.24 m) into a whole "
      "number of cells, such as 0.007058823529 (34 cells), found 0.007 (34.2857 cells)"},

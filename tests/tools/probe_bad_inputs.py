@@ -10,6 +10,12 @@ run through every subcommand's options. A finding is an exit code of 5, a death 
 run over the time limit, or an error message of more than one line. Exit status: 1 if anything
 was found, else 0; the last line counts the runs ("N passed, M failed").
 
+--quick (the ctest `Probe.BadInputsFindNothing`, label `probe`, a budget of 3 min on a loaded
+2-core machine) runs fewer awkward values, a fixed sample of the document variants (every
+QUICK_SCENE_STEP-th scene variant and QUICK_BUBBLES_STEP-th bubble variant, always the same ones)
+and fewer option values, plus every input a past full run found (QUICK_REGRESSIONS), so each
+finding fixed stays in the quick set.
+
 usage: probe_bad_inputs.py FLUIDSOUND [--quick] [--verbose]
 Standard library only (the brief: Debian's /usr/bin/python3).
 """
@@ -25,6 +31,16 @@ AWKWARD_NUMBERS = [0, -1, 0.5, 1e308, -1e308, 5e-324, 1e-300, 44100.5, 184467440
 AWKWARD_OTHERS = ["x", "", None, True, [], {}, [1, 2], [0, 0, 0, 0]]
 QUICK_NUMBERS = [0, -1, 0.5, 1e308, 5e-324, 18446744073709551616]
 QUICK_OTHERS = ["x", None, []]
+QUICK_SCENE_STEP = 2
+QUICK_BUBBLES_STEP = 2
+# Every (document, JSON path, value) a full run has found (exit 5, a signal or over the time
+# limit), run in every quick run whether or not the sample above holds it.
+QUICK_REGRESSIONS = [
+    ("scene", "time.fps", 44100.5),                      # 4410 frames of 0.1 s: over 60 s
+    ("scene", "emitters[0].disk.center[1]", 1e308),      # particles at y = inf: SIGSEGV
+    ("scene", "emitters[0].disk.radius", 44100.5),       # 10^15 particles drawn: over 60 s
+    ("scene", "emitters[0].disk.radius", 7.0),           # 3·10^7 particles: over 60 s
+]
 
 # A scene small enough that an accepted variant simulates in well under a second.
 BASE_SCENE = {
@@ -59,7 +75,9 @@ BASE_BUBBLES = {
 
 # (subcommand, option, values) for every numeric or enumerated option documented in docs/cli.md.
 OPTION_VALUES = ["0", "-1", "0.5", "1e308", "5e-324", "nan", "inf", "x", "", "18446744073709551616"]
-SYNTH_OPTIONS = ["--rate", "--bits", "--normalize", "--duration", "--format", "--threads",
+# nan was the value of every option finding (synth --normalize, spectrogram --range, validate --rate).
+QUICK_OPTION_VALUES = ["-1", "1e308", "nan", "inf", "x"]
+SYNTH_OPTIONS = ["--rate", "--bits", "--normalize", "--loudness", "--duration", "--format", "--threads",
                  "--chirp-rise", "--displacement", "--damping", "--excitation"]
 SPECTROGRAM_OPTIONS = ["--window", "--hop", "--range", "--width", "--height", "--channel",
                        "--min-frequency", "--threads"]
@@ -140,21 +158,41 @@ def variants(document, numbers, others):
             yield f"{path}: removed", replaced(document, path, None, remove=True)
 
 
-def probe_documents(probe, numbers, others):
-    for label, scene in variants(BASE_SCENE, numbers, others):
-        path = os.path.join(probe.work, "probe.scene.json")
-        with open(path, "w") as out:
-            json.dump(scene, out)
-        probe.run("scene " + label, ["run", path, "-o", os.path.join(probe.work, "out"), "--quiet",
-                                     "--threads", "1"])
-    for label, bubbles in variants(BASE_BUBBLES, numbers, others):
-        path = os.path.join(probe.work, "probe.bubbles.json")
-        with open(path, "w") as out:
-            json.dump(bubbles, out)
-        probe.run("bubbles " + label, ["synth", path, "-o", os.path.join(probe.work, "probe.wav"), "--quiet"])
+def run_scene(probe, label, scene):
+    path = os.path.join(probe.work, "probe.scene.json")
+    with open(path, "w") as out:
+        json.dump(scene, out)
+    probe.run("scene " + label, ["run", path, "-o", os.path.join(probe.work, "out"), "--quiet",
+                                 "--threads", "1"])
 
 
-def probe_options(probe):
+def run_bubbles(probe, label, bubbles):
+    path = os.path.join(probe.work, "probe.bubbles.json")
+    with open(path, "w") as out:
+        json.dump(bubbles, out)
+    probe.run("bubbles " + label, ["synth", path, "-o", os.path.join(probe.work, "probe.wav"), "--quiet"])
+
+
+def probe_documents(probe, numbers, others, quick):
+    """Every variant of both documents (with --quick: a fixed sample, and the regressions)."""
+    scene_step, bubbles_step = (QUICK_SCENE_STEP, QUICK_BUBBLES_STEP) if quick else (1, 1)
+    for index, (label, scene) in enumerate(variants(BASE_SCENE, numbers, others)):
+        if index % scene_step == 0:
+            run_scene(probe, label, scene)
+    for index, (label, bubbles) in enumerate(variants(BASE_BUBBLES, numbers, others)):
+        if index % bubbles_step == 0:
+            run_bubbles(probe, label, bubbles)
+    if not quick:
+        return
+    for document, path, value in QUICK_REGRESSIONS:
+        label = f"{path} = {json.dumps(value)}"
+        if document == "scene":
+            run_scene(probe, label, replaced(BASE_SCENE, path, value))
+        else:
+            run_bubbles(probe, label, replaced(BASE_BUBBLES, path, value))
+
+
+def probe_options(probe, values):
     bubbles = os.path.join(probe.work, "base.bubbles.json")
     with open(bubbles, "w") as out:
         json.dump(BASE_BUBBLES, out)
@@ -164,18 +202,22 @@ def probe_options(probe):
     wav = os.path.join(probe.work, "base.wav")
     probe.run("synth base", ["synth", bubbles, "-o", wav, "--quiet"])
     for option in SYNTH_OPTIONS:
-        for value in OPTION_VALUES:
+        for value in values:
             probe.run(f"synth {option} {value!r}",
                       ["synth", bubbles, "-o", os.path.join(probe.work, "o.wav"), "--quiet", option, value])
+    for value in values:  # --true-peak needs --loudness
+        probe.run(f"synth --loudness -23 --true-peak {value!r}",
+                  ["synth", bubbles, "-o", os.path.join(probe.work, "o.wav"), "--quiet", "--loudness", "-23",
+                   "--true-peak", value])
     for option in SPECTROGRAM_OPTIONS:
-        for value in OPTION_VALUES:
+        for value in values:
             probe.run(f"spectrogram {option} {value!r}",
                       ["spectrogram", wav, "-o", os.path.join(probe.work, "o.png"), "--quiet", option, value])
     for option in VALIDATE_OPTIONS:
-        for value in OPTION_VALUES[:6]:
+        for value in [v for v in values if v in OPTION_VALUES[:6]]:
             probe.run(f"validate {option} {value!r}", ["validate", "--quiet", option, value])
     for option in SIMULATE_OPTIONS:
-        for value in OPTION_VALUES + ["3:1", "0:999", "-1:2", "1:"]:
+        for value in values + ["3:1", "0:999", "-1:2", "1:"]:
             probe.run(f"simulate {option} {value!r}",
                       ["simulate", scene, "-o", os.path.join(probe.work, "sim"), "--quiet", option, value])
     for name in ["synth", "spectrogram", "simulate", "transfer", "run"]:
@@ -194,8 +236,8 @@ def main():
     with tempfile.TemporaryDirectory(prefix="fluidsound-probe-") as work:
         probe = Probe(executable, work, verbose, timeout=60)
         numbers, others = (QUICK_NUMBERS, QUICK_OTHERS) if quick else (AWKWARD_NUMBERS, AWKWARD_OTHERS)
-        probe_documents(probe, numbers, others)
-        probe_options(probe)
+        probe_documents(probe, numbers, others, quick)
+        probe_options(probe, QUICK_OPTION_VALUES if quick else OPTION_VALUES)
     for finding in probe.findings:
         print("FINDING " + finding)
     print(f"probe: {probe.runs} runs of {executable}")

@@ -157,7 +157,7 @@ const std::vector<SimulateCase> kSimulateCases = {
     {"scene_is_a_folder", Input::Folder, nullptr, nullptr, Output::Fresh, "out", kExitBadInput,
      "scene.json", "expected a readable file, found a folder"},
     {"bad_scene_before_unusable_outdir", Input::Scene, "/time/fps", "0", Output::IsAFile, "out",
-     kExitBadInput, "scene.json", "time.fps: expected a number > 0 (frames per second), found 0"},
+     kExitBadInput, "scene.json", "time.fps: expected a number > 0 and <= 1000 (frames per second), found 0"},
 
     // ---- a valid scene, an OUTDIR that cannot be written ----------------------------------------
     {"outdir_is_a_file", Input::Scene, nullptr, nullptr, Output::IsAFile, "out", kExitOutputFailed,
