@@ -18,6 +18,7 @@
 #include "io/output_file.h"
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
+#include "tools/number_checks.h"
 #include "tools/progress_display.h"
 #include "tools/render_memory.h"
 #include "tools/run_report.h"
@@ -32,7 +33,7 @@ CLI::App* addSynthCommand(CLI::App& app, SynthOptions& o) {
       ->required();
   addAudioOutputOptions(*c, o.audio);
   c->add_option("--duration", o.duration, "length of the render in seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
   c->add_option("--report", o.report, "run report (default: OUT.report.json; none for -, a device or a FIFO)");
   c->add_option("--spectrogram", o.spectrogram, "also draw the spectrogram to this PNG");
   addOscillatorModelOptions(*c, o.model);

@@ -40,6 +40,7 @@ const std::vector<FloatOption> kFloatOptions = {
     {"synth", "--displacement", "> 0", "", ""},
     {"synth", "--chirp-rise", ">= 0", "", ""},
     {"spectrogram", "--range", "from 10 to 200", "", ""},
+    {"synth", "--duration", "> 0", "", ""},
     {"spectrogram", "--min-frequency", "> 0", "", ""},
     {"validate", "--rate", "from 44100 to 192000", "", ""},
     {"validate", "--displacement", "> 0", "", ""},
