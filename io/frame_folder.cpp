@@ -8,6 +8,7 @@
 #include <optional>
 #include <system_error>
 
+#include "io/file_kind.h"
 #include "io/input_error.h"
 
 namespace fluidsound::io {
@@ -64,23 +65,6 @@ std::optional<long> temporaryOwner(std::string_view name) {
 
 bool processHasEnded(long pid) { return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
 
-std::string kindOf(fs::file_type type) {
-  switch (type) {
-    case fs::file_type::directory:
-      return "a folder";
-    case fs::file_type::fifo:
-      return "a FIFO";
-    case fs::file_type::block:
-      return "a block device";
-    case fs::file_type::character:
-      return "a character device";
-    case fs::file_type::socket:
-      return "a socket";
-    default:
-      return "not a regular file";
-  }
-}
-
 }  // namespace
 
 std::string frameFileName(int frame, std::string_view extension) {
@@ -111,7 +95,7 @@ FrameFolderCleanup clearStaleFrames(const fs::path& folder, const FrameWritten& 
       if (!written(frame->frame, frame->extension)) remove.push_back(path);
     } else if (frame && written(frame->frame, frame->extension)) {
       throw OutputError(
-          path.string() + ": cannot write the frame: it is " + kindOf(type) +
+          path.string() + ": cannot write the frame: it is " + fileKindName(type) +
           ", not a file a simulation wrote; remove it or choose another output folder");
     } else if (owner && type == fs::file_type::regular && processHasEnded(*owner)) {
       remove.push_back(path);

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/file_kind.h"
+
 namespace fluidsound::io {
 namespace {
 
@@ -225,24 +227,10 @@ json parseJson(std::string_view text, const std::string& file, DuplicateKeys dup
 std::string nonRegularInput(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  switch (fs::status(path, ec).type()) {
-    case fs::file_type::regular:
-      return "";
-    case fs::file_type::directory:
-      return "a folder";
-    case fs::file_type::fifo:
-      return "a FIFO";
-    case fs::file_type::character:
-      return "a character device";
-    case fs::file_type::block:
-      return "a block device";
-    case fs::file_type::socket:
-      return "a socket";
-    case fs::file_type::not_found:
-      return "no such file";
-    default:
-      return ec ? ec.message() : "not a regular file";
-  }
+  const fs::file_type type = fs::status(path, ec).type();
+  if (type == fs::file_type::regular) return "";
+  if (ec && type != fs::file_type::not_found) return ec.message();
+  return fileKindName(type);
 }
 
 std::string readStandardInput(const std::string& name) {

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "io/atomic_file.h"
+#include "io/file_kind.h"
 #include "io/input_error.h"
 #include "io/interruption.h"
 
@@ -32,9 +33,8 @@ std::string refusedKind(fs::file_type type) {
     case fs::file_type::directory:
       return "it is a folder";
     case fs::file_type::block:
-      return "it is a block device, which is never replaced";
     case fs::file_type::socket:
-      return "it is a socket, which is never replaced";
+      return "it is " + fileKindName(type) + ", which is never replaced";
     case fs::file_type::regular:
     case fs::file_type::character:
     case fs::file_type::fifo:
