@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -21,8 +23,7 @@
 #include "io/scene_file.h"
 #include "io/scene_meshes.h"
 #include "io/text_file.h"
-#include "sim/bubble_model.h"
-#include "sim/fluid_solver.h"
+#include "sim/simulation.h"
 #include "sim/simulation_failure.h"
 #include "tools/cell_option.h"
 #include "tools/solver_memory.h"
@@ -88,6 +89,66 @@ void clearOtherRunsFrames(const std::filesystem::path& frames, const FrameRange&
   }
 }
 
+/// The simulation's observer for the CLI: writes the kept frames (VDB, and PLY with --ply), logs
+/// a line per frame and shows progress; a signal (io/interruption.h) interrupts the simulation.
+class FrameWriter : public sim::SimulationObserver {
+ public:
+  FrameWriter(std::filesystem::path frames, bool ply, int last, bool quiet)
+      : frames_(std::move(frames)), ply_(ply), last_(last), progress_("simulate", last + 1, "frames", quiet) {}
+
+  void onFrame(const sim::FrameView& state, const sim::FrameRecord& record) override {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (state.kept) {
+      try {  // a frame for a FIFO waits for its reader, until a signal
+        io::writeFrameVdb(frames_ / frameName(record.frame, "vdb"), state.grid, state.particles, state.velocity,
+                          {state.particleRadius});
+        if (ply_) io::writeParticlesPly(frames_ / frameName(record.frame, "ply"), state.particles);
+      } catch (const io::Interrupted& signal) {
+        unwritten_.emplace(record.frame, signal);
+        return;
+      }
+    }
+    const double seconds =
+        record.simulationSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    char line[160];  // through the display, which clears its line first on a terminal
+    std::snprintf(line, sizeof line,
+                  "frame %4d/%d  t %.3f s  substeps %2d  cg %4d (res %.1e)  particles %zu  %.2f s", record.frame,
+                  last_, record.time, record.fluid.substeps, record.fluid.pressureIterations,
+                  record.fluid.pressureResidual, record.particles, seconds);
+    progress_.log(line);
+  }
+  void progress(double fraction) override { progress_.update(fraction); }
+  bool wasInterrupted() override { return io::interruptionRequested(); }
+  void finish() { progress_.finish(); }
+  /// The frame whose writing a signal ended, and the signal (the simulation stopped after it).
+  const std::optional<std::pair<int, io::Interrupted>>& unwritten() const { return unwritten_; }
+
+ private:
+  std::filesystem::path frames_;
+  bool ply_;
+  int last_;
+  ProgressDisplay progress_;
+  std::optional<std::pair<int, io::Interrupted>> unwritten_;
+};
+
+/// report.json's `results.frames`: one object per frame made (docs/cli.md).
+nlohmann::ordered_json framesJson(const std::vector<sim::FrameRecord>& records) {
+  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+  for (const sim::FrameRecord& r : records) {
+    const sim::FrameStats& s = r.fluid;
+    frames.push_back({{"frame", r.frame}, {"time", r.time}, {"substeps", s.substeps},
+                      {"cg_iterations", s.pressureIterations}, {"cg_residual", s.pressureResidual},
+                      {"cg_converged", s.pressureConverged}, {"particles", r.particles},
+                      {"particles_deleted", s.particlesDeleted}, {"particles_emitted", s.particlesEmitted},
+                      {"particles_reseeded", s.particlesReseeded}, {"particles_thinned", s.particlesThinned},
+                      {"density_cg_iterations", s.densityIterations}, {"max_density_excess", s.maxDensityExcess},
+                      {"liquid_volume", s.liquidVolume}, {"max_divergence", s.maxDivergence},
+                      {"max_speed", s.maxSpeed}, {"bubbles_alive", r.bubblesAlive},
+                      {"bubbles_total", r.bubblesTotal}, {"seconds", r.simulationSeconds + r.observerSeconds}});
+  }
+  return frames;
+}
+
 }  // namespace
 
 int runSimulateCommand(const SimulateOptions& o) {
@@ -97,8 +158,7 @@ int runSimulateCommand(const SimulateOptions& o) {
   sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   io::loadSceneMeshes(scene);
-  const int total = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
-  const FrameRange range = parseFrames(o.frames, total);
+  const FrameRange range = parseFrames(o.frames, sim::lastSceneFrame(scene));
   const std::filesystem::path out = o.output, frames = out / "frames";
   // Both outputs are checked before the frames folder is made, so a failure leaves nothing new.
   std::error_code ec;
@@ -111,95 +171,43 @@ int runSimulateCommand(const SimulateOptions& o) {
   io::requireWritableFolder(frames / "0000.vdb");
   clearOtherRunsFrames(frames, range, o.ply, o.common.quiet);
 
-  sim::FluidSolver solver(scene);
-  // The bubble model runs inside the loop on the in-memory state (DESIGN.md), with the scene's
-  // `bubbles` block (docs/bubbles.md).
-  sim::BubbleModel bubbles(scene.bubbles, scene.seed, scene.gravity);
-  int frame = 0;  // the frame being made, named by the message of a signal
-  const sim::SubstepObserver stepBubbles = [&bubbles, &frame](const sim::LiquidState& liquid, double t, double dt) {
-    io::throwIfInterrupted("simulate frame " + std::to_string(frame));
-    bubbles.step(liquid, t, dt);
-  };
-  double bubbleSeconds = 0.0;
-  nlohmann::ordered_json perFrame = nlohmann::ordered_json::array();
-  double simulateSeconds = 0.0, writeSeconds = 0.0;
-  ProgressDisplay progress("simulate", range.last + 1, "frames", o.common.quiet);
+  FrameWriter writer(frames, o.ply, range.last, o.common.quiet);
+  sim::SimulationResult result;
+  try {
+    result = sim::simulate(scene, {range.first, range.last}, writer);
+  } catch (const sim::SubstepLimitError& e) {  // bad input: the scene asks for what cannot end
+    throw io::InputError(o.scene, e.likelyFields(),
+                         "a frame that ends within " + std::to_string(sim::kMaxSubstepsPerFrame) + " substeps",
+                         e.what());
+  } catch (const sim::SimulationFailure& e) {  // one line: the scene, the frame, where
+    throw sim::SimulationFailure(o.scene + ": " + e.what());
+  }
+  writer.finish();
   // A signal ends the frames (each written one is whole); the report then says where it ended.
   std::optional<io::Interrupted> interrupted;
-  try {
-    for (int f = 0; f <= range.last; ++f) {
-      frame = f;
-      io::throwIfInterrupted("simulate frame " + std::to_string(f));
-      const auto t0 = Clock::now();
-      sim::FrameStats stats;
-      if (f == 0) {  // the initial state: nothing simulated, but its volume is the reference
-        stats.particles = solver.particles().size();
-        stats.liquidVolume = solver.liquidVolume();  // outside the solids, as every later frame's
-      } else {
-        try {
-          stats = solver.advanceTo(f / scene.time.fps, stepBubbles);
-        } catch (const sim::SubstepLimitError& e) {  // bad input: the scene asks for what cannot end
-          throw io::InputError(o.scene, e.likelyFields(),
-                               "a frame that ends within " + std::to_string(sim::kMaxSubstepsPerFrame) + " substeps",
-                               "frame " + std::to_string(f) + " needs " + e.what());
-        } catch (const sim::SimulationFailure& e) {  // one line: the scene, the frame, where
-          throw sim::SimulationFailure(o.scene + ": frame " + std::to_string(f) + ": " + e.what());
-        }
-        const auto s0 = Clock::now();
-        bubbles.sampleFrame(solver.time());  // the bubble model's too, not the fluid's
-        bubbleSeconds += stats.stageSeconds.bubbles + std::chrono::duration<double>(Clock::now() - s0).count();
-      }
-      const auto t1 = Clock::now();
-      if (f >= range.first) {
-        io::writeFrameVdb(frames / frameName(f, "vdb"), solver.grid(), solver.particles(), solver.velocity(),
-                          {solver.particleRadius()});
-        if (o.ply) io::writeParticlesPly(frames / frameName(f, "ply"), solver.particles());
-      }
-      const auto t2 = Clock::now();
-      const double seconds = std::chrono::duration<double>(t2 - t0).count();
-      simulateSeconds += std::chrono::duration<double>(t1 - t0).count();
-      writeSeconds += std::chrono::duration<double>(t2 - t1).count();
-      perFrame.push_back({{"frame", f}, {"time", solver.time()}, {"substeps", stats.substeps},
-                          {"cg_iterations", stats.pressureIterations}, {"cg_residual", stats.pressureResidual},
-                          {"cg_converged", stats.pressureConverged}, {"particles", solver.particles().size()},
-                          {"particles_deleted", stats.particlesDeleted}, {"particles_emitted", stats.particlesEmitted},
-                          {"particles_reseeded", stats.particlesReseeded}, {"particles_thinned", stats.particlesThinned},
-                          {"density_cg_iterations", stats.densityIterations},
-                          {"max_density_excess", stats.maxDensityExcess},
-                          {"liquid_volume", stats.liquidVolume},
-                          {"max_divergence", stats.maxDivergence}, {"max_speed", stats.maxSpeed},
-                          {"bubbles_alive", bubbles.aliveCount()}, {"bubbles_total", bubbles.bubbles().size()},
-                          {"seconds", seconds}});
-      char line[160];  // through the display, which clears its line first on a terminal
-      std::snprintf(line, sizeof line,
-                    "frame %4d/%d  t %.3f s  substeps %2d  cg %4d (res %.1e)  particles %zu  %.2f s",
-                    f, range.last, solver.time(), stats.substeps, stats.pressureIterations,
-                    stats.pressureResidual, solver.particles().size(), seconds);
-      progress.log(line);
-      progress.update(static_cast<double>(f + 1) / (range.last + 1));
-    }
-  } catch (const io::Interrupted& signal) {
-    interrupted = signal;
+  if (writer.unwritten()) {  // the report lists the frames before it, as for a signal in a frame
+    interrupted = writer.unwritten()->second;
+    std::erase_if(result.frames, [&](const sim::FrameRecord& r) { return r.frame >= writer.unwritten()->first; });
+  } else if (result.interrupted) {
+    interrupted.emplace(io::interruptionSignal(), "simulate frame " + std::to_string(result.interrupted->frame));
   }
-  progress.finish();
   const auto w0 = Clock::now();
-  if (!interrupted)
-    io::writeBubbleTracks(out / "bubbles.json", io::bubbleTracksFromHistories(bubbles.bubbles(), scene));
-  writeSeconds += std::chrono::duration<double>(Clock::now() - w0).count();
+  if (!interrupted) io::writeBubbleTracks(out / "bubbles.json", io::bubbleTracksFromHistories(result.bubbles, scene));
+  const double writeSeconds = result.observerSeconds + std::chrono::duration<double>(Clock::now() - w0).count();
 
   RunReport report("simulate");
   report.setting("scene", o.scene);
   report.setting("output", o.output);
-  report.setting("cells", static_cast<double>(solver.grid().cells[0]) * solver.grid().cells[1] * solver.grid().cells[2]);
-  report.setting("cell_size", solver.grid().cellSize);
+  report.setting("cells", static_cast<double>(result.grid.cells[0]) * result.grid.cells[1] * result.grid.cells[2]);
+  report.setting("cell_size", result.grid.cellSize);
   report.setting("fps", scene.time.fps);
   report.setting("cfl", scene.time.cfl);
   report.setting("seed", static_cast<double>(scene.seed));
-  report.stageSeconds("simulation", simulateSeconds - bubbleSeconds);
-  report.stageSeconds("bubbles", bubbleSeconds);
+  report.stageSeconds("simulation", result.simulationSeconds);
+  report.stageSeconds("bubbles", result.bubbleSeconds);
   report.stageSeconds("output", writeSeconds);
-  report.resultJson("frames", perFrame.dump());
-  report.result("bubbles", static_cast<double>(bubbles.bubbles().size()));
+  report.resultJson("frames", framesJson(result.frames).dump());
+  report.result("bubbles", static_cast<double>(result.bubbles.size()));
   report.result("seconds", std::chrono::duration<double>(Clock::now() - start).count());
   if (interrupted) report.markIncomplete(interrupted->where());
   report.write(out / "report.json");

@@ -10,41 +10,30 @@
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
 
-#include <chrono>
-#include <cmath>
 #include <string>
 
 #include "io/scene_file.h"
 #include "io/scene_meshes.h"
-#include "sim/bubble_model.h"
-#include "sim/fluid_solver.h"
+#include "sim/simulation.h"
 
 namespace {
 
 using namespace fluidsound;
 
-/// Simulates the scene's whole duration frame by frame with the bubble model on every substep.
+/// Simulates the scene's whole duration as `fluidsound simulate` does (sim::simulate).
 void BM_BubbleShare(benchmark::State& state, const std::string& sceneName) {
   sim::Scene scene = io::readScene(std::string(FLUIDSOUND_SOURCE_DIR) + "/scenes/" + sceneName + ".scene.json");
   io::loadSceneMeshes(scene);
-  const int frames = static_cast<int>(std::lround(scene.time.duration * scene.time.fps));
   double fluid = 0.0, bubbles = 0.0, substeps = 0.0, made = 0.0;
   for (auto _ : state) {
-    sim::FluidSolver solver(scene);
-    sim::BubbleModel model(scene.bubbles, scene.seed, scene.gravity);
-    const sim::SubstepObserver observer = [&model](const sim::LiquidState& liquid, double t, double dt) {
-      model.step(liquid, t, dt);
-    };
-    for (int f = 1; f <= frames; ++f) {
-      const sim::FrameStats stats = solver.advanceTo(f / scene.time.fps, observer);
-      const auto sampling = std::chrono::steady_clock::now();
-      model.sampleFrame(solver.time());
-      fluid += stats.stageSeconds.substepTotal() + stats.stageSeconds.particleMaintenance;
-      bubbles += stats.stageSeconds.bubbles +
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - sampling).count();
-      substeps += stats.substeps;
+    sim::SimulationObserver unobserved;
+    const sim::SimulationResult result = sim::simulate(scene, {}, unobserved);
+    for (const sim::FrameRecord& frame : result.frames) {
+      fluid += frame.fluid.stageSeconds.substepTotal() + frame.fluid.stageSeconds.particleMaintenance;
+      substeps += frame.fluid.substeps;
     }
-    made += static_cast<double>(model.bubbles().size());
+    bubbles += result.bubbleSeconds;
+    made += static_cast<double>(result.bubbles.size());
   }
   const double runs = static_cast<double>(state.iterations());
   state.counters["fluid_s"] = fluid / runs;

@@ -1,0 +1,142 @@
+// Tests of sim::simulate (sim/simulation.h): the simulate stage's frame loop, its observer
+// (frames in order, progress, interruption) and its failures naming the frame.
+#include "sim/simulation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "sim/bubble_model.h"
+#include "sim/fluid_solver.h"
+#include "sim/simulation_failure.h"
+
+namespace fluidsound::sim {
+namespace {
+
+/// A closed 8 × 8 × 8 box of 1 cm cells whose lower half is liquid, falling for 0.1 s (frames 0 …
+/// 3).
+Scene settlingBox() {
+  Scene scene;
+  scene.domain.max = {0.08, 0.08, 0.08};
+  scene.domain.cell = 0.01;
+  scene.time.duration = 0.1;
+  scene.liquid.push_back({Box{{0, 0, 0}, {0.08, 0.05, 0.04}}, {}});
+  return scene;
+}
+
+/// Records what reaches it; asks to stop at the `stopAtCall`-th wasInterrupted call (0: never).
+struct RecordingObserver : SimulationObserver {
+  std::vector<int> frames, kept;
+  std::vector<FrameRecord> records;
+  std::vector<double> fractions;
+  int calls = 0, stopAtCall = 0;
+  void onFrame(const FrameView& state, const FrameRecord& record) override {
+    frames.push_back(record.frame);
+    if (state.kept) kept.push_back(record.frame);
+    records.push_back(record);
+    EXPECT_EQ(state.particles.size(), record.particles);
+  }
+  void progress(double fraction) override { fractions.push_back(fraction); }
+  bool wasInterrupted() override { return ++calls == stopAtCall; }
+};
+
+TEST(Simulation, FramesReachTheObserverInOrderWithTheSolversStats) {
+  const Scene scene = settlingBox();
+  RecordingObserver observer;
+  const SimulationResult result = simulate(scene, {2, std::nullopt}, observer);
+  EXPECT_EQ(observer.frames, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(observer.kept, (std::vector<int>{2, 3}));
+  EXPECT_EQ(observer.fractions, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
+  EXPECT_FALSE(result.interrupted);
+  ASSERT_EQ(result.frames.size(), 4u);
+
+  // The same frames stepped by hand: the same stats, bubble histories and grid.
+  FluidSolver solver(scene);
+  BubbleModel bubbles(scene.bubbles, scene.seed, scene.gravity);
+  EXPECT_EQ(result.frames[0].fluid.liquidVolume, solver.liquidVolume());
+  EXPECT_EQ(result.frames[0].particles, solver.particles().size());
+  for (int f = 1; f <= 3; ++f) {
+    const FrameStats stats = solver.advanceTo(
+        f / 30.0,
+        [&](const LiquidState& liquid, double t, double dt) { bubbles.step(liquid, t, dt); });
+    bubbles.sampleFrame(solver.time());
+    const FrameRecord& r = result.frames[f];
+    EXPECT_EQ(r.frame, f);
+    EXPECT_EQ(r.time, solver.time());
+    EXPECT_EQ(r.fluid.substeps, stats.substeps);
+    EXPECT_EQ(r.fluid.pressureIterations, stats.pressureIterations);
+    EXPECT_EQ(r.fluid.liquidVolume, stats.liquidVolume);
+    EXPECT_EQ(r.fluid.maxSpeed, stats.maxSpeed);
+    EXPECT_EQ(r.particles, solver.particles().size());
+    EXPECT_EQ(r.bubblesTotal, bubbles.bubbles().size());
+    EXPECT_EQ(observer.records[f].fluid.substeps, stats.substeps);
+  }
+  EXPECT_GT(result.frames[3].fluid.maxSpeed, 0.0);  // it moved: the comparison compared something
+  EXPECT_EQ(result.bubbles.size(), bubbles.bubbles().size());
+  EXPECT_EQ(result.grid.cells, solver.grid().cells);
+}
+
+TEST(Simulation, AnInterruptionBeforeAFrameStopsThereAndKeepsTheFramesMade) {
+  RecordingObserver observer;
+  observer.stopAtCall = 1;  // before frame 0
+  SimulationResult result = simulate(settlingBox(), {}, observer);
+  ASSERT_TRUE(result.interrupted);
+  EXPECT_EQ(result.interrupted->frame, 0);
+  EXPECT_FALSE(result.interrupted->inSubstep);
+  EXPECT_TRUE(result.frames.empty());
+  EXPECT_TRUE(observer.frames.empty());
+
+  // Calls: 1 before frame 0, 2 before frame 1, then one per substep of frame 1, then before
+  // frame 2.
+  RecordingObserver counting;
+  simulate(settlingBox(), {0, 1}, counting);
+  const int frame1Substeps = counting.records.at(1).fluid.substeps;
+  RecordingObserver late;
+  late.stopAtCall = 3 + frame1Substeps;  // before frame 2
+  result = simulate(settlingBox(), {}, late);
+  ASSERT_TRUE(result.interrupted);
+  EXPECT_EQ(result.interrupted->frame, 2);
+  EXPECT_FALSE(result.interrupted->inSubstep);
+  EXPECT_EQ(late.frames, (std::vector<int>{0, 1}));
+  EXPECT_EQ(result.frames.size(), 2u);
+}
+
+TEST(Simulation, AnInterruptionInASubstepDropsThatFrame) {
+  RecordingObserver observer;
+  observer.stopAtCall = 4;  // before frame 0, before frame 1, its first substep, its second
+  const SimulationResult result = simulate(settlingBox(), {}, observer);
+  ASSERT_TRUE(result.interrupted);
+  EXPECT_EQ(result.interrupted->frame, 1);
+  EXPECT_TRUE(result.interrupted->inSubstep);
+  EXPECT_EQ(observer.frames, (std::vector<int>{0}));
+  ASSERT_EQ(result.frames.size(), 1u);
+  EXPECT_EQ(result.frames[0].frame, 0);
+}
+
+TEST(Simulation, ASimulationFailureNamesTheFrame) {
+  Scene scene = settlingBox();
+  scene.liquid[0].velocity = {std::numeric_limits<double>::infinity(), 0.0,
+                              0.0};  // no step advances
+  RecordingObserver observer;
+  try {
+    simulate(scene, {}, observer);
+    ADD_FAILURE() << "no SimulationFailure";
+  } catch (const SimulationFailure& e) {
+    EXPECT_TRUE(std::string(e.what()).starts_with("frame 1: ")) << e.what();
+  }
+  EXPECT_EQ(observer.frames, (std::vector<int>{0}));
+}
+
+TEST(Simulation, AFrameRangeOutsideTheSceneIsRefused) {
+  RecordingObserver observer;
+  EXPECT_THROW(simulate(settlingBox(), {0, 4}, observer), std::invalid_argument);
+  EXPECT_THROW(simulate(settlingBox(), {3, 2}, observer), std::invalid_argument);
+  EXPECT_THROW(simulate(settlingBox(), {-1, 2}, observer), std::invalid_argument);
+  EXPECT_TRUE(observer.frames.empty());
+}
+
+}  // namespace
+}  // namespace fluidsound::sim
