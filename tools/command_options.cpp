@@ -47,7 +47,7 @@ void addOscillatorModelOptions(CLI::App& command, acoustics::OscillatorModel& mo
 }
 
 std::string oscillatorModelFingerprint(const acoustics::OscillatorModel& m) {
-  char text[240];
+  char text[512];
   std::snprintf(
       text, sizeof text,
       "model polytropic %d surface-tension %d vapour %d hydrostatic %d damping %d excitation %d "
