@@ -9,6 +9,7 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
 
+#include "io/frame_folder.h"
 #include "io/input_error.h"
 #include "io/vdb_file_check.h"
 
@@ -76,6 +77,10 @@ acoustics::LocalSurface FrameSurface::surfaceAbove(const acoustics::Vec3& centre
   // The plane through the surface point; the bubble sits h below it along the normal.
   for (int a = 0; a < 3; ++a) s.point[a] = centre[a] + h * s.normal[a];
   return s;
+}
+
+std::unique_ptr<acoustics::FrameSurface> FrameFolderSurfaces::open(int frame) const {
+  return std::make_unique<FrameSurface>(outdir_ / "frames" / frameFileName(frame, "vdb"));
 }
 
 }  // namespace fluidsound::io

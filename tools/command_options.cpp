@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -44,6 +45,18 @@ void addOscillatorModelOptions(CLI::App& command, acoustics::OscillatorModel& mo
   command.add_flag("--chirp", model.chirp, "van den Doel rising pitch f0 (1 + xi beta t)");
   command.add_option("--chirp-rise", model.chirpRiseFactor, "van den Doel rise factor xi (default 0.1)")
       ->check(finiteNonNegative());
+}
+
+std::string oscillatorModelFingerprint(const acoustics::OscillatorModel& m) {
+  char text[512];
+  std::snprintf(
+      text, sizeof text,
+      "model polytropic %d surface-tension %d vapour %d hydrostatic %d damping %d excitation %d "
+      "displacement %.17g jet-cone %.17g jet-max %.17g chirp %d chirp-rise %.17g",
+      static_cast<int>(m.polytropic), m.surfaceTension, m.vapour, m.hydrostatic,
+      static_cast<int>(m.damping), static_cast<int>(m.excitation), m.initialDisplacement,
+      m.jetConeParameter, m.jetMaxDuration, m.chirp, m.chirpRiseFactor);
+  return text;
 }
 
 namespace {

@@ -27,6 +27,10 @@ void addCommonOptions(CLI::App& command, CommonOptions& options);
 /// --excitation, --chirp) to a subcommand; defaults are those of docs/physics.md.
 void addOscillatorModelOptions(CLI::App& command, acoustics::OscillatorModel& model);
 
+/// Every field of `model` as text, for the input fingerprint of the stages that use it (`run`
+/// runs transfer and synth again when the model changes).
+std::string oscillatorModelFingerprint(const acoustics::OscillatorModel& model);
+
 /// A file named on the command line, with the option (or argument) that names it.
 struct NamedFile {
   const char* option;  ///< e.g. "--report", or "bubbles" for a positional argument

@@ -47,6 +47,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
   c->add_flag("--fresh", o.fresh, "run every stage again, even if its artefacts are up to date");
   addCellOption(*c, o.cell);
   addAudioOutputOptions(*c, o.audio);
+  addOscillatorModelOptions(*c, o.model);
   addCommonOptions(*c, o.common);
   return c;
 }
@@ -191,7 +192,8 @@ int runStages(const RunOptions& o) {
   // Runs `stage` unless its record shows it complete (stage_records.h: same inputs, the files it
   // reads as their producer left them, every artefact present and unchanged), then records what it
   // read and wrote, so that an interrupted or damaged run redoes exactly the stages it must.
-  // `stageHash` is the stage's own input hash: the scene's, and for synth also the audio options.
+  // `stageHash` is the stage's own input hash: the scene's, for transfer also the oscillator model
+  // (it gives ω), for synth the model and the audio options.
   const auto runStage = [&](const char* name, const std::vector<std::string>& reads, const auto& body,
                             const std::vector<std::string>& artefacts, const std::string& stageHash) {
     const std::string reason = records.reasonToRun(name, stageHash, reads, artefacts);
@@ -231,10 +233,12 @@ int runStages(const RunOptions& o) {
   transfer.common = o.common;
   transfer.scene = o.scene;
   transfer.output = o.output;
+  transfer.model = o.model;
   std::vector<std::string> transferReads = frames;
   transferReads.push_back("bubbles.json");
+  const std::string modelHash = hash + " " + oscillatorModelFingerprint(o.model);
   runStage("transfer", transferReads, [&] { runTransferCommand(transfer); },
-           {"bubbles.json", "transfer.report.json"}, hash);
+           {"bubbles.json", "transfer.report.json"}, modelHash);
 
   SynthOptions synth;
   synth.common = o.common;
@@ -243,9 +247,11 @@ int runStages(const RunOptions& o) {
   synth.output = (out / audioFile).string();
   synth.spectrogram = (out / "spectrogram.png").string();
   synth.report = (out / "synth.report.json").string();
+  synth.model = o.model;
   // The synth stage also depends on the audio options: a new --loudness renders again.
   runStage("synth", {"bubbles.json"}, [&] { runSynthCommand(synth); },
-           {audioFile, "spectrogram.png", "synth.report.json"}, hash + " " + audioOptionsFingerprint(o.audio));
+           {audioFile, "spectrogram.png", "synth.report.json"},
+           modelHash + " " + audioOptionsFingerprint(o.audio));
 
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");
   const Json synthReport = Json::parse(fileBytes(out / "synth.report.json"), nullptr, false);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "acoustics/oscillator_model.h"
 #include "tools/audio_options.h"
 #include "tools/command_options.h"
 
@@ -18,6 +19,7 @@ struct RunOptions {
   bool fresh = false;  ///< run every stage even if its artefacts are up to date
   std::optional<double> cell;  ///< --cell: grid cell size [m] replacing domain.cell
   AudioOutputOptions audio;    ///< synth's audio options, passed on to the synth stage
+  acoustics::OscillatorModel model;  ///< the run's one model: transfer's ω, synth's oscillators
 };
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options);

@@ -1,10 +1,12 @@
 // tools/transfer_command.h — `fluidsound transfer SCENE.json -o OUTDIR`: fills the `transfer`
 // values of OUTDIR/bubbles.json from the artefacts alone (frames/NNNN.vdb, the scene's listeners),
-// with the image-source model (acoustics/image_source_transfer.h; docs/transfer.md).
+// with the image-source model; the stage itself is acoustics::computeTransfer
+// (acoustics/transfer_stage.h; docs/transfer.md), this command only wires files to it.
 #pragma once
 
 #include <string>
 
+#include "acoustics/oscillator_model.h"
 #include "tools/command_options.h"
 
 namespace fluidsound::tools {
@@ -13,6 +15,7 @@ struct TransferOptions {
   CommonOptions common;
   std::string scene;
   std::string output;
+  acoustics::OscillatorModel model;  ///< gives each bubble's ω (the model synth renders with)
 };
 
 CLI::App* addTransferCommand(CLI::App& app, TransferOptions& options);
