@@ -212,7 +212,7 @@ void removeSpeakerPositions(std::string& bytes, const fs::path& path, int format
                             std::size_t channels) {
   if (channels < kFirstUnpositionedChannelCount) return;
   if ((format & SF_FORMAT_TYPEMASK) == SF_FORMAT_FLAC)
-    bytes = flacWithoutSpeakerMask(bytes, path);
+    clearFlacSpeakerMask(bytes, path);
   else
     clearWaveSpeakerMask(bytes, path);
 }

@@ -4,11 +4,8 @@
 // "Ogg Vorbis I specification" §5).
 #include "io/channel_layout.h"
 
-#include <array>
 #include <cstdint>
 #include <cstring>
-#include <istream>
-#include <sstream>
 #include <string_view>
 
 #include "io/input_error.h"
@@ -113,25 +110,28 @@ struct FlacBlock {
   std::string body;
 };
 
-/// Reads "fLaC" and every metadata block; leaves `in` at the first audio frame.
-std::vector<FlacBlock> readFlacMetadata(const fs::path& path, std::istream& in) {
-  std::array<char, 4> magic{};
-  if (!in.read(magic.data(), 4) || std::memcmp(magic.data(), "fLaC", 4) != 0)
+/// Reads "fLaC" and every metadata block of an encoded stream, in place.
+/// @return the blocks; `audioStart` is set to the offset of the first audio frame
+std::vector<FlacBlock> readFlacMetadata(const fs::path& path, std::string_view flac,
+                                        std::size_t& audioStart) {
+  if (flac.size() < 4 || flac.substr(0, 4) != "fLaC")
     cannotLabel(path, "the encoder did not write a FLAC stream");
   std::vector<FlacBlock> blocks;
+  std::size_t at = 4;
   bool last = false;
   while (!last) {
-    unsigned char header[4];
-    if (!in.read(reinterpret_cast<char*>(header), 4))
-      cannotLabel(path, "its FLAC metadata is truncated");
+    if (flac.size() - at < 4) cannotLabel(path, "its FLAC metadata is truncated");
+    const auto* header = reinterpret_cast<const unsigned char*>(flac.data() + at);
     last = (header[0] & kFlacLastBlockFlag) != 0;
     const std::size_t length =
         (std::size_t{header[1]} << 16) | (std::size_t{header[2]} << 8) | header[3];
-    FlacBlock block{static_cast<std::uint8_t>(header[0] & 0x7f), std::string(length, '\0')};
-    if (!in.read(block.body.data(), static_cast<std::streamsize>(length)))
-      cannotLabel(path, "its FLAC metadata is truncated");
-    blocks.push_back(std::move(block));
+    at += 4;
+    if (flac.size() - at < length) cannotLabel(path, "its FLAC metadata is truncated");
+    blocks.push_back(
+        {static_cast<std::uint8_t>(header[0] & 0x7f), std::string(flac.substr(at, length))});
+    at += length;
   }
+  audioStart = at;
   return blocks;
 }
 
@@ -160,7 +160,8 @@ std::string ixmlTrackList(const std::vector<std::string>& names) {
 
 void clearWaveSpeakerMask(std::string& wav, const fs::path& name) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(wav.data());
-  if (wav.size() < 12 || std::memcmp(bytes, "RIFF", 4) != 0 || std::memcmp(bytes + 8, "WAVE", 4) != 0)
+  if (wav.size() < 12 || std::memcmp(bytes, "RIFF", 4) != 0 ||
+      std::memcmp(bytes + 8, "WAVE", 4) != 0)
     cannotLabel(name, "the encoder did not write a RIFF WAVE file");
   for (std::size_t at = 12; at + 8 <= wav.size();) {
     const std::size_t size = littleEndian32(bytes + at + 4);
@@ -182,10 +183,9 @@ void clearWaveSpeakerMask(std::string& wav, const fs::path& name) {
   cannotLabel(name, "the encoder wrote no fmt chunk");
 }
 
-std::string flacWithoutSpeakerMask(const std::string& flac, const fs::path& name) {
-  std::istringstream in(flac);
-  std::vector<FlacBlock> blocks = readFlacMetadata(name, in);
-  const auto audioStart = static_cast<std::size_t>(in.tellg());
+void clearFlacSpeakerMask(std::string& flac, const fs::path& name) {
+  std::size_t audioStart = 0;
+  std::vector<FlacBlock> blocks = readFlacMetadata(name, flac, audioStart);
   VorbisComments comments;
   std::vector<FlacBlock> kept;
   for (FlacBlock& block : blocks) {
@@ -195,11 +195,10 @@ std::string flacWithoutSpeakerMask(const std::string& flac, const fs::path& name
       kept.push_back(std::move(block));
   }
   comments.entries.emplace_back(kNoSpeakerMask);
-  std::string labelled = "fLaC";
-  for (const FlacBlock& block : kept) appendFlacBlock(labelled, block, false);
-  appendFlacBlock(labelled, {kFlacVorbisCommentType, vorbisCommentBody(comments)}, true);
-  labelled.append(flac, audioStart, std::string::npos);
-  return labelled;
+  std::string metadata = "fLaC";
+  for (const FlacBlock& block : kept) appendFlacBlock(metadata, block, false);
+  appendFlacBlock(metadata, {kFlacVorbisCommentType, vorbisCommentBody(comments)}, true);
+  flac.replace(0, audioStart, metadata);  // the audio frames are moved, never copied
 }
 
 }  // namespace fluidsound::io

@@ -24,11 +24,11 @@ std::string ixmlTrackList(const std::vector<std::string>& names);
 /// @throws OutputError if the bytes are not a WAVE_FORMAT_EXTENSIBLE file
 void clearWaveSpeakerMask(std::string& wav, const std::filesystem::path& name);
 
-/// @brief An encoded FLAC stream with the Vorbis comment WAVEFORMATEXTENSIBLE_CHANNEL_MASK=0x0
-///        (no speaker positions; the FLAC format's way to override its default layouts for 3–8
-///        channels), keeping any other comments; the audio frames are copied byte for byte.
-///        `name` is the output's, for errors.
+/// @brief Gives an encoded FLAC stream in memory the Vorbis comment
+///        WAVEFORMATEXTENSIBLE_CHANNEL_MASK=0x0 (no speaker positions; the FLAC format's way to
+///        override its default layouts for 3–8 channels), keeping any other comments; the audio
+///        frames are kept byte for byte. `name` is the output's, for errors.
 /// @throws OutputError if `flac` is not a FLAC stream
-std::string flacWithoutSpeakerMask(const std::string& flac, const std::filesystem::path& name);
+void clearFlacSpeakerMask(std::string& flac, const std::filesystem::path& name);
 
 }  // namespace fluidsound::io
