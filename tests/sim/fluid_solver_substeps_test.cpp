@@ -9,19 +9,13 @@
 #include <string>
 
 #include "sim/fluid_solver.h"
+#include "support/small_tank.h"
 
 namespace fluidsound::sim {
 namespace {
 
 /// A closed 8 × 8 × 8 tank of 1 cm cells, half full: a few thousand particles, fast substeps.
-Scene smallTank() {
-  Scene s;
-  s.domain.max = {0.08, 0.08, 0.08};
-  s.domain.cell = 0.01;
-  s.time.duration = 1.0;
-  s.liquid.push_back({Box{{0, 0, 0}, {0.08, 0.04, 0.08}}, {}});
-  return s;
-}
+Scene smallTank() { return test::smallTank({0.08, 0.04, 0.08}, 1.0); }
 
 /// The SubstepLimitError of advancing `scene` one frame (1/30 s) with at most `limit` substeps,
 /// or a test failure.

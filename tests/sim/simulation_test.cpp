@@ -12,20 +12,14 @@
 #include "sim/bubble_model.h"
 #include "sim/fluid_solver.h"
 #include "sim/simulation_failure.h"
+#include "support/small_tank.h"
 
 namespace fluidsound::sim {
 namespace {
 
 /// A closed 8 × 8 × 8 box of 1 cm cells whose lower half is liquid, falling for 0.1 s (frames 0 …
 /// 3).
-Scene settlingBox() {
-  Scene scene;
-  scene.domain.max = {0.08, 0.08, 0.08};
-  scene.domain.cell = 0.01;
-  scene.time.duration = 0.1;
-  scene.liquid.push_back({Box{{0, 0, 0}, {0.08, 0.05, 0.04}}, {}});
-  return scene;
-}
+Scene settlingBox() { return test::smallTank({0.08, 0.05, 0.04}, 0.1); }
 
 /// Records what reaches it; asks to stop at the `stopAtCall`-th wasInterrupted call (0: never).
 struct RecordingObserver : SimulationObserver {
