@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "acoustics/loudness.h"
+#include "acoustics/analysis/loudness.h"
 #include "io/channel_layout.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "acoustics/loudness.h"
+#include "acoustics/analysis/loudness.h"
 
 namespace fluidsound::io {
 

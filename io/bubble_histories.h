@@ -4,8 +4,8 @@
 
 #include <span>
 
-#include "acoustics/bubble_track.h"
-#include "sim/bubble_history.h"
+#include "acoustics/bubble/bubble_track.h"
+#include "sim/bubbles/bubble_history.h"
 #include "sim/scene.h"
 
 namespace fluidsound::io {

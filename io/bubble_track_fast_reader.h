@@ -7,7 +7,7 @@
 #include <optional>
 #include <string_view>
 
-#include "acoustics/bubble_track.h"
+#include "acoustics/bubble/bubble_track.h"
 #include "io/bubble_track_file.h"
 
 namespace fluidsound::io {

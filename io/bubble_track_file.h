@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "acoustics/bubble_track.h"
+#include "acoustics/bubble/bubble_track.h"
 
 namespace fluidsound::io {
 

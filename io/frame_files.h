@@ -6,9 +6,9 @@
 
 #include <filesystem>
 
-#include "sim/grid.h"
-#include "sim/mac_velocity.h"
-#include "sim/particles.h"
+#include "sim/fluid/grid.h"
+#include "sim/fluid/mac_velocity.h"
+#include "sim/fluid/particles.h"
 
 namespace fluidsound::io {
 

@@ -46,19 +46,19 @@ FrameSurface::~FrameSurface() = default;
 FrameSurface::FrameSurface(FrameSurface&&) noexcept = default;
 FrameSurface& FrameSurface::operator=(FrameSurface&&) noexcept = default;
 
-acoustics::LocalSurface FrameSurface::surfaceAbove(const acoustics::Vec3& centre, double depth,
-                                                   const acoustics::Vec3& up) const {
+acoustics::LocalSurface FrameSurface::surfaceAbove(const Vec3& centre, double depth,
+                                                   const Vec3& up) const {
   const acoustics::LocalSurface flat{{centre[0] + depth * up[0], centre[1] + depth * up[1], centre[2] + depth * up[2]},
                                      up, depth};
   openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sample(*grid_->grid);
-  const auto phi = [&](const acoustics::Vec3& x) { return double(sample.wsSample(openvdb::Vec3d(x[0], x[1], x[2]))); };
-  const acoustics::Vec3& p = flat.point;
+  const auto phi = [&](const Vec3& x) { return double(sample.wsSample(openvdb::Vec3d(x[0], x[1], x[2]))); };
+  const Vec3& p = flat.point;
   const double value = phi(p);
   if (std::abs(value) >= 0.99 * grid_->background) return flat;  // beyond the band
-  acoustics::Vec3 gradient{};
+  Vec3 gradient{};
   double norm2 = 0.0;
   for (int a = 0; a < 3; ++a) {
-    acoustics::Vec3 plus = p, minus = p;
+    Vec3 plus = p, minus = p;
     plus[a] += grid_->voxel, minus[a] -= grid_->voxel;
     gradient[a] = (phi(plus) - phi(minus)) / (2.0 * grid_->voxel);
     norm2 += gradient[a] * gradient[a];

@@ -7,8 +7,8 @@
 #include <memory>
 #include <utility>
 
-#include "acoustics/image_source_transfer.h"
-#include "acoustics/transfer_stage.h"
+#include "acoustics/transfer/image_source_transfer.h"
+#include "acoustics/transfer/transfer_stage.h"
 
 namespace fluidsound::io {
 
@@ -28,8 +28,8 @@ class FrameSurface : public acoustics::FrameSurface {
   ///        the projected depth is not positive, the plane is the horizontal one at the track's
   ///        depth (normal `up`).
   /// @param centre  bubble centre [m]; `depth` [m] > 0 from the track; `up` a unit vector
-  acoustics::LocalSurface surfaceAbove(const acoustics::Vec3& centre, double depth,
-                                       const acoustics::Vec3& up) const override;
+  acoustics::LocalSurface surfaceAbove(const Vec3& centre, double depth,
+                                       const Vec3& up) const override;
 
  private:
   struct Grid;

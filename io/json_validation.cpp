@@ -357,7 +357,7 @@ std::uint64_t JsonValidator::wholeNumber(const json& value, const std::string& p
   return n;
 }
 
-JsonValidator::Vec3 JsonValidator::vector(const json& value, const std::string& path,
+Vec3 JsonValidator::vector(const json& value, const std::string& path,
                                           const std::string& unit) const {
   if (!value.is_array() || value.size() != 3)
     fail(path, "an array of 3 numbers [x, y, z] (" + unit + ")", describe(value));
@@ -367,7 +367,7 @@ JsonValidator::Vec3 JsonValidator::vector(const json& value, const std::string& 
   return v;
 }
 
-JsonValidator::Vec3 JsonValidator::requiredVector(const json& parent, const std::string& parentPath,
+Vec3 JsonValidator::requiredVector(const json& parent, const std::string& parentPath,
                                                   std::string_view key,
                                                   const std::string& unit) const {
   const json* value = findMember(parent, key);

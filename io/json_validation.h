@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "io/input_error.h"
+#include "sim/core/vec3.h"
 
 namespace fluidsound::io {
 
@@ -113,7 +114,6 @@ std::string readStandardInput(const std::string& name);
 class JsonValidator {
  public:
   using json = nlohmann::json;
-  using Vec3 = std::array<double, 3>;
 
   /// @param file   named in every error; must outlive the validator
   /// @param rules  how rejectUnknownKeys treats keys the format does not define

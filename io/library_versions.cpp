@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "acoustics/loudness.h"
+#include "acoustics/analysis/loudness.h"
 
 namespace fluidsound::io {
 namespace {

@@ -5,9 +5,9 @@
 // sim::Array3f out.
 #pragma once
 
-#include "sim/array3.h"
-#include "sim/grid.h"
-#include "sim/triangle_mesh.h"
+#include "sim/fluid/array3.h"
+#include "sim/fluid/grid.h"
+#include "sim/fluid/triangle_mesh.h"
 
 namespace fluidsound::io {
 
@@ -16,7 +16,7 @@ namespace fluidsound::io {
 struct MeshPlacement {
   double scale = 1.0;  ///< [-], > 0, about the world origin (Solid::scale)
   /// [m]: Solid::translate, plus the path translation for a kinematic solid
-  sim::Vec3 translate{};
+  Vec3 translate{};
 };
 
 struct MeshDistanceSettings {

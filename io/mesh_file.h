@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/mesh_closedness.h"
-#include "sim/triangle_mesh.h"
+#include "sim/fluid/mesh_closedness.h"
+#include "sim/fluid/triangle_mesh.h"
 
 namespace fluidsound::io {
 

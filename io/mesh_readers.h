@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "io/mesh_file.h"
-#include "sim/triangle_mesh.h"
+#include "sim/fluid/triangle_mesh.h"
 
 namespace fluidsound::io {
 

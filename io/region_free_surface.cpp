@@ -4,8 +4,8 @@
 #include <algorithm>
 
 #include "io/mesh_distance.h"
-#include "sim/liquid_level_set.h"
-#include "sim/particle_seeding.h"
+#include "sim/fluid/liquid_level_set.h"
+#include "sim/fluid/particle_seeding.h"
 
 namespace fluidsound::io {
 
@@ -15,7 +15,7 @@ sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
   const double contact = sim::kSolidContactCells * grid.cellSize;
   // On (or beyond) the grid's boundary — a closed wall, or an open face the liquid runs on
   // through — or against a solid.
-  const auto againstWallOrSolid = [&](const sim::Vec3& p) {
+  const auto againstWallOrSolid = [&](const Vec3& p) {
     for (int a = 0; a < 3; ++a)
       if (p[a] <= grid.origin[a] + contact ||
           p[a] >= grid.origin[a] + grid.cells[a] * grid.cellSize - contact)
@@ -25,7 +25,7 @@ sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
   sim::TriangleMesh free;
   free.vertices = region.vertices;
   for (const auto& t : region.triangles) {
-    sim::Vec3 corner[3], centroid{0.0, 0.0, 0.0};
+    Vec3 corner[3], centroid{0.0, 0.0, 0.0};
     for (int v = 0; v < 3; ++v)
       for (int a = 0; a < 3; ++a) {
         corner[v][a] = region.vertices[t[v]][a];

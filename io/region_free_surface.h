@@ -1,12 +1,12 @@
 // io/region_free_surface.h — simulation input for a mesh liquid region: where its surface is
 // free. Water modelled up to a glass's or a basin's walls has faces lying on those walls; they
 // are where the liquid meets the solid, not a surface, and the liquid level set must not start
-// with one there (sim/liquid_level_set.h). In io/ because it runs OpenVDB (mesh_distance.h).
+// with one there (sim/fluid/liquid_level_set.h). In io/ because it runs OpenVDB (mesh_distance.h).
 #pragma once
 
-#include "sim/array3.h"
-#include "sim/grid.h"
-#include "sim/triangle_mesh.h"
+#include "sim/fluid/array3.h"
+#include "sim/fluid/grid.h"
+#include "sim/fluid/triangle_mesh.h"
 
 namespace fluidsound::io {
 

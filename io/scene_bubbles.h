@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/json_validation.h"
-#include "sim/bubble_settings.h"
+#include "sim/bubbles/bubble_settings.h"
 
 namespace fluidsound::io {
 

@@ -14,12 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "acoustics/oscillator_bank.h"
+#include "acoustics/synthesis/oscillator_bank.h"
 #include "io/json_validation.h"
 #include "io/render_limits.h"
 #include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
-#include "sim/fluid_solver.h"
+#include "sim/fluid/fluid_solver.h"
 
 namespace fluidsound::io {
 namespace {
@@ -61,7 +61,7 @@ constexpr double kMaxFps = 1000.0;
 /// Largest |gravity| [m/s²]: 100 g, beyond any centrifuge a liquid sound would be recorded in.
 constexpr double kMaxGravity = 1000.0;
 
-double norm(const sim::Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 /// Face names in the order of sim::Domain::open.
 constexpr std::array<std::string_view, 6> kFaceNames = {"-x", "+x", "-y", "+y", "-z", "+z"};
@@ -260,7 +260,7 @@ class SceneReader {
     for (std::size_t i = 0; i < scene.liquid.size(); ++i)
       if (norm(scene.liquid[i].velocity) > source)
         source = norm(scene.liquid[i].velocity), sourceField = memberPath(elementPath("liquid", i), "velocity");
-    sim::Vec3 diagonal{};
+    Vec3 diagonal{};
     for (std::size_t a = 0; a < 3; ++a) diagonal[a] = scene.domain.max[a] - scene.domain.min[a];
     const double fall = std::sqrt(2.0 * g * norm(diagonal)) + std::sqrt(5.0 * h * g);
     const auto substeps = [&](double cfl, double fps) { return (source + fall) / (cfl * h * fps); };

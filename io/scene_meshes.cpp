@@ -11,25 +11,25 @@
 #include "io/mesh_distance.h"
 #include "io/mesh_file.h"
 #include "io/region_free_surface.h"
-#include "sim/solid_geometry.h"
+#include "sim/fluid/solid_geometry.h"
 
 namespace fluidsound::io {
 namespace {
 /// The mesh placed as a solid (docs/scene.md, "Placement of a solid", without the path): scaled
 /// about the origin, rotated about the centre of its scaled bounding box, translated; in double,
 /// then stored as float like the file's own coordinates.
-sim::TriangleMesh placedMesh(sim::TriangleMesh mesh, double scale, const sim::Vec3& rotateDegrees,
-                             const sim::Vec3& translate) {
-  sim::Vec3 lower{1e300, 1e300, 1e300}, upper{-1e300, -1e300, -1e300};
+sim::TriangleMesh placedMesh(sim::TriangleMesh mesh, double scale, const Vec3& rotateDegrees,
+                             const Vec3& translate) {
+  Vec3 lower{1e300, 1e300, 1e300}, upper{-1e300, -1e300, -1e300};
   for (const auto& v : mesh.vertices)
     for (int a = 0; a < 3; ++a) {
       lower[a] = std::min(lower[a], scale * v[a]);
       upper[a] = std::max(upper[a], scale * v[a]);
     }
-  sim::Vec3 centre{};
+  Vec3 centre{};
   for (int a = 0; a < 3; ++a) centre[a] = 0.5 * (lower[a] + upper[a]);
   for (auto& v : mesh.vertices) {
-    const sim::Vec3 turned = sim::rotateByEulerDegrees(
+    const Vec3 turned = sim::rotateByEulerDegrees(
         {scale * v[0] - centre[0], scale * v[1] - centre[1], scale * v[2] - centre[2]},
         rotateDegrees);
     for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(centre[a] + turned[a] + translate[a]);

@@ -11,8 +11,8 @@ namespace fluidsound::io {
 ///        the scaled bounding box, translate — docs/scene.md; liquid regions as written), requires
 ///        it closed and fills MeshFile::distance with its signed distance at the nodes of
 ///        scene.grid() (io/mesh_distance.h) and, for a solid, MeshFile::surface with its placed
-///        triangles (for the ray queries of sim/solid_mesh_rays.h). A kinematic mesh solid's
-///        path then shifts both (sim/solid_geometry.h, sim/solid_mesh_rays.h).
+///        triangles (for the ray queries of sim/fluid/solid_mesh_rays.h). A kinematic mesh solid's
+///        path then shifts both (sim/fluid/solid_geometry.h, sim/fluid/solid_mesh_rays.h).
 /// @throws InputError naming the scene file and the field (`solids[2].mesh`) for a missing,
 ///         malformed or open mesh
 void loadSceneMeshes(sim::Scene& scene);

@@ -15,7 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using sim::Vec3;
 
 /// "a, b and c" (or "a and b", or "a").
 std::string joinWithAnd(const std::vector<std::string_view>& words) {
@@ -181,7 +180,7 @@ sim::LiquidRegion readLiquidRegion(const JsonValidator& check, const json& item,
   region.shape = shape(check, item, path, folder);
   if (const json* velocity = findMember(item, "velocity")) {
     region.velocity = check.vector(*velocity, memberPath(path, "velocity"), "m/s");
-    const sim::Vec3& v = region.velocity;
+    const Vec3& v = region.velocity;
     const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     if (!(speed <= kMaxLiquidSpeed)) {
       check.fail(memberPath(path, "velocity"), "a velocity of at most 1000 m/s (two thirds of the speed of sound in water)",

@@ -15,7 +15,7 @@ namespace fluidsound::io {
 ///        "max", already read into `min` and `max` [m]).
 /// @throws InputError naming `path.max[a]` of the first axis that is not ordered
 void requireOrdered(const JsonValidator& check, const nlohmann::json& box, const std::string& path,
-                    const sim::Vec3& min, const sim::Vec3& max);
+                    const Vec3& min, const Vec3& max);
 
 /// @brief One item of `liquid`: exactly one shape (box, sphere or mesh) and an optional initial
 ///        velocity [m/s].

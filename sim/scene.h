@@ -1,96 +1,17 @@
 // sim/scene.h — a scene (`fluidsound.scene/1`, DESIGN.md; docs/scene.md) as value types: what
-// the simulation reads. io/scene_file.h parses and validates the JSON into these records.
+// the simulation reads (the liquid solver's part, sim/fluid/fluid_scene.h, and the bubble model's)
+// and what the later stages read (listeners, audio rate). io/scene_file.h parses and validates the
+// JSON into these records.
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <filesystem>
-#include <memory>
-#include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
-#include "sim/array3.h"
-#include "sim/bubble_settings.h"
-#include "sim/grid.h"
-#include "sim/triangle_mesh.h"
+#include "sim/bubbles/bubble_settings.h"
+#include "sim/fluid/fluid_scene.h"
 
 namespace fluidsound::sim {
-
-/// Axis-aligned box [m], min < max on every axis.
-struct Box {
-  Vec3 min{}, max{};
-  bool operator==(const Box&) const = default;
-};
-
-/// Sphere [m].
-struct Sphere {
-  Vec3 center{};
-  double radius = 0.0;
-  bool operator==(const Sphere&) const = default;
-};
-
-/// A mesh's signed distance sampled at the nodes of a grid [m], negative inside, clamped to a
-/// band of a few cells: io fills it when it loads a scene's meshes (io/scene_meshes.h) and the
-/// solver interpolates it (meshDistance in sim/particle_seeding.h).
-struct MeshNodeDistance {
-  GridGeometry grid;  ///< the nodes are origin + (i, j, k)·cellSize
-  Array3f nodes;      ///< size grid.nodeCount()
-  /// For a liquid region: the signed distance at the cell centres (size grid.cells) to its free
-  /// surface, its faces not lying against a solid (io/region_free_surface.h); empty for a solid.
-  Array3f freeSurfaceAtCentres;
-};
-
-/// A triangle mesh file (OBJ or PLY), path resolved against the scene file's folder.
-struct MeshFile {
-  std::filesystem::path file;
-  /// The mesh placed by its solid's scale and translation (not its path), once loaded.
-  std::shared_ptr<const MeshNodeDistance> distance{};
-  /// The triangles placed the same way [m] (solids only, once loaded): what the ray queries
-  /// against thin walls use (sim/solid_mesh_rays.h).
-  std::shared_ptr<const TriangleMesh> surface{};
-  /// Two references are equal when they name the same file (the distance follows from it).
-  bool operator==(const MeshFile& other) const { return file == other.file; }
-};
-
-using Shape = std::variant<Box, Sphere, MeshFile>;
-
-/// An initial region of liquid.
-struct LiquidRegion {
-  Shape shape;
-  Vec3 velocity{};  ///< initial velocity [m/s]
-  bool operator==(const LiquidRegion&) const = default;
-};
-
-/// A liquid source: a disk nozzle emitting along its normal.
-struct Emitter {
-  Vec3 center{};        ///< [m]
-  Vec3 normal{};        ///< unit vector (normalised by the parser)
-  double radius = 0.0;  ///< [m], > 0
-  double speed = 0.0;   ///< [m/s], > 0
-  double start = 0.0;   ///< [s]
-  double end = 0.0;     ///< [s], > start
-  bool operator==(const Emitter&) const = default;
-};
-
-/// A key of a kinematic solid's path: translation at a time (linear in between).
-struct PathKey {
-  double time = 0.0;  ///< [s], strictly increasing along the path
-  Vec3 translate{};   ///< [m]
-  bool operator==(const PathKey&) const = default;
-};
-
-/// A solid obstacle. The shape is scaled (about the origin), rotated (degrees about x, then y,
-/// then z, about the shape's centre) and translated; then moved along its path, if any.
-struct Solid {
-  Shape shape;
-  double scale = 1.0;            ///< [-], > 0
-  Vec3 rotateDegrees{};          ///< [degrees] (boxes and meshes; e.g. a sloped floor)
-  Vec3 translate{};              ///< [m]
-  std::vector<PathKey> path;     ///< empty: static
-  bool operator==(const Solid&) const = default;
-};
 
 /// A listener: one output channel.
 struct Listener {
@@ -99,63 +20,13 @@ struct Listener {
   bool operator==(const Listener&) const = default;
 };
 
-/// The simulated box; its faces are solid walls except those listed open.
-struct Domain {
-  Vec3 min{}, max{};            ///< [m]
-  double cell = 0.0;            ///< cell size h [m], > 0
-  /// Open faces, in the order −x, +x, −y, +y, −z, +z: liquid leaving there is deleted.
-  std::array<bool, 6> open{};
-  bool operator==(const Domain&) const = default;
-};
-
-struct TimeSettings {
-  double duration = 0.0;  ///< simulated time [s], > 0
-  double fps = 30.0;      ///< frames per second of the output, > 0
-  double cfl = 1.0;       ///< substep CFL number (cells a particle may travel per substep), > 0
-  bool operator==(const TimeSettings&) const = default;
-};
-
-/// How velocity moves between particles and grid.
-enum class TransferScheme {
-  Apic,  ///< affine particle-in-cell (Jiang et al. 2015). Default.
-  Flip,  ///< FLIP/PIC blend (Zhu & Bridson 2005) with `flipRatio`
-};
-
-/// Numerical settings of the liquid solver (the scene's optional "solver" block).
-/// The liquid surface the pressure solve sees (docs/solver.md, step 4).
-enum class SurfaceMethod {
-  Particles,  ///< re-derived from the particles every substep (Zhu & Bridson 2005)
-  LevelSet,   ///< a grid level set carried with the liquid and held to the particles
-};
-
-struct SolverSettings {
-  TransferScheme transfer = TransferScheme::Apic;
-  double flipRatio = 0.95;        ///< FLIP share of the FLIP/PIC blend [-], 0 … 1
-  int particlesPerCell = 8;       ///< seeding density (jittered), 1 … 64
-  double pressureTolerance = 1e-6;  ///< relative residual of the pressure solve
-  int maxPressureIterations = 1000;
-  SurfaceMethod surface = SurfaceMethod::LevelSet;
-  bool operator==(const SolverSettings&) const = default;
-};
-
-/// A whole scene.
-struct Scene {
-  std::filesystem::path file;     ///< the scene file (for messages); paths inside are resolved
-  Domain domain;
-  Vec3 gravity{0.0, -9.81, 0.0};  ///< [m/s²]
-  TimeSettings time;
-  std::uint64_t seed = 1;
-  std::vector<LiquidRegion> liquid;
-  std::vector<Emitter> emitters;
-  std::vector<Solid> solids;
+/// A whole scene: the fluid's part and the rest.
+struct Scene : FluidScene {
+  std::filesystem::path file;       ///< the scene file (for messages); paths inside are resolved
   std::vector<Listener> listeners;  ///< default: one listener 0.5 m above the domain centre
   double sampleRate = 48000.0;      ///< [Hz], the "audio" block
-  SolverSettings solver;
   BubbleSettings bubbles;           ///< the "bubbles" block (docs/bubbles.md); defaults if absent
   bool operator==(const Scene&) const = default;
-
-  /// The grid of the domain: cells = round((max − min)/cell) per axis.
-  GridGeometry grid() const;
 };
 
 }  // namespace fluidsound::sim

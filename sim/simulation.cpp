@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/bubble_model.h"
-#include "sim/simulation_failure.h"
+#include "sim/bubbles/bubble_model.h"
+#include "sim/fluid/simulation_failure.h"
 
 namespace fluidsound::sim {
 

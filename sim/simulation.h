@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "sim/bubble_history.h"
-#include "sim/fluid_solver.h"
+#include "sim/bubbles/bubble_history.h"
+#include "sim/fluid/fluid_solver.h"
 #include "sim/scene.h"
 
 namespace fluidsound::sim {

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Reads the machine code of every oscillator kernel and says whether its sample loops stay vector.
 
-Each kernel of acoustics/oscillator_bank.cpp (accumulateAvx512, accumulateAvx2,
-accumulateBaseline; one per x86-64 level, acoustics/oscillator_kernel.h) is compiled for its own
+Each kernel of acoustics/synthesis/oscillator_bank.cpp (accumulateAvx512, accumulateAvx2,
+accumulateBaseline; one per x86-64 level, acoustics/synthesis/oscillator_kernel.h) is compiled for its own
 level whatever CPU builds it, so its code can be checked on any machine, including the kernels
 that machine cannot run. This disassembles the object file with objdump and, inside each
 kernel's loops (the address ranges spanned by its backward branches), counts
@@ -20,8 +20,8 @@ access inside a loop (0 if none), so it can be run after a compiler or code chan
 
 usage: tools/check_kernel_code.py [OBJECT]
   OBJECT  an object file or the library archive that holds oscillator_bank.cpp's code (ctest runs
-          it on build/acoustics/libfluidsound_acoustics.a); default
-          build/acoustics/CMakeFiles/fluidsound_acoustics.dir/oscillator_bank.cpp.o
+          it on build/acoustics/synthesis/libfluidsound_acoustics_synthesis.a); default
+          build/acoustics/synthesis/CMakeFiles/fluidsound_acoustics_synthesis.dir/oscillator_bank.cpp.o
 """
 import pathlib
 import re
@@ -75,7 +75,7 @@ def stack_access(operands):
 
 def main():
     path = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else
-                        "build/acoustics/CMakeFiles/fluidsound_acoustics.dir/oscillator_bank.cpp.o")
+                        "build/acoustics/synthesis/CMakeFiles/fluidsound_acoustics_synthesis.dir/oscillator_bank.cpp.o")
     functions = disassemble(path)
     clean = True
     for kernel in KERNELS:

@@ -5,7 +5,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "acoustics/oscillator_model.h"
+#include "acoustics/bubble/oscillator_model.h"
 #include "io/audio_file.h"
 
 namespace CLI {

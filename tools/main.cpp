@@ -9,7 +9,7 @@
 
 #include "io/input_error.h"
 #include "io/interruption.h"
-#include "sim/simulation_failure.h"
+#include "sim/fluid/simulation_failure.h"
 #include "tools/run_command.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Benchmark (not a test): simulates a scene under `perf record` and prints its seconds per frame
 # and substep, the solver's stage split from report.json, the share of the profile spent in the
-# thin-wall ray queries (Embree, sim/solid_mesh_rays.h, sim/thin_wall_faces.h) and the top
+# thin-wall ray queries (Embree, sim/fluid/solid_mesh_rays.h, sim/fluid/thin_wall_faces.h) and the top
 # functions. Issue 5 asks for this figure for the glass pour, the default scene.
 #   usage: tools/profile_scene.sh [SCENE.json]     (after tools/setup.sh; needs perf: linux-perf)
 set -euo pipefail

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "acoustics/instantaneous_frequency.h"
+#include "acoustics/bubble/instantaneous_frequency.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
 #include "io/memory_text.h"

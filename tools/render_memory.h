@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "acoustics/bubble_track.h"
-#include "acoustics/synthesizer.h"
+#include "acoustics/bubble/bubble_track.h"
+#include "acoustics/synthesis/synthesizer.h"
 #include "sim/scene.h"
 
 namespace fluidsound::tools {

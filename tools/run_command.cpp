@@ -17,9 +17,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "acoustics/centroid_prediction.h"
-#include "acoustics/power_spectrum.h"
-#include "acoustics/spectrum_statistics.h"
+#include "acoustics/analysis/centroid_prediction.h"
+#include "acoustics/analysis/power_spectrum.h"
+#include "acoustics/analysis/spectrum_statistics.h"
 #include "io/audio_file.h"
 #include "io/bubble_track_file.h"
 #include "io/file_digest.h"
@@ -130,7 +130,7 @@ constexpr std::size_t kSpectrumSegmentSamples = 16384;
 constexpr double kCentroidLowHz = 20.0, kCentroidHighHz = 20000.0;
 
 /// Per listener, the rendered audio's spectral centroid and the one predicted from the bubble
-/// tracks (acoustics/centroid_prediction.h, docs/synthesis.md "What the spectrum shows"); null
+/// tracks (acoustics/analysis/centroid_prediction.h, docs/synthesis.md "What the spectrum shows"); null
 /// where a channel has no energy in the band.
 Json spectrumSummary(const acoustics::BubbleTrackSet& tracks,
                      const std::filesystem::path& audioPath,

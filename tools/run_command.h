@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "acoustics/oscillator_model.h"
+#include "acoustics/bubble/oscillator_model.h"
 #include "tools/audio_options.h"
 #include "tools/command_options.h"
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "acoustics/oscillator_model.h"
+#include "acoustics/bubble/oscillator_model.h"
 
 namespace fluidsound::tools {
 

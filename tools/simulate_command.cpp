@@ -24,7 +24,7 @@
 #include "io/scene_meshes.h"
 #include "io/text_file.h"
 #include "sim/simulation.h"
-#include "sim/simulation_failure.h"
+#include "sim/fluid/simulation_failure.h"
 #include "tools/cell_option.h"
 #include "tools/solver_memory.h"
 #include "tools/progress_display.h"

@@ -9,7 +9,7 @@
 
 #include "io/input_error.h"
 #include "io/memory_text.h"
-#include "sim/grid.h"
+#include "sim/fluid/grid.h"
 
 namespace fluidsound::tools {
 

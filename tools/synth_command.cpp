@@ -9,8 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "acoustics/oscillator_bank.h"
-#include "acoustics/synthesizer.h"
+#include "acoustics/synthesis/oscillator_bank.h"
+#include "acoustics/synthesis/synthesizer.h"
 #include "io/audio_file.h"
 #include "io/bubble_track_file.h"
 #include "io/input_error.h"
@@ -93,7 +93,7 @@ void addSynthResults(RunReport& report, const SynthOptions& o, const acoustics::
   report.result("duration_seconds", static_cast<double>(r.frames) / settings.sampleRate);
   report.result("channels", static_cast<double>(channels));
   report.result("peak_pascals", r.peakPascals);
-  // The inner loop that ran (acoustics/oscillator_kernel.h): a speed figure says what it measured.
+  // The inner loop that ran (acoustics/synthesis/oscillator_kernel.h): a speed figure says what it measured.
   report.result("oscillator_kernel", std::string(acoustics::oscillatorKernelName(r.kernel)));
   report.result("gain", w.gain);
   report.result("output_peak_dbfs", w.outputPeakDbfs);

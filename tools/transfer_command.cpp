@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "acoustics/transfer_stage.h"
+#include "acoustics/transfer/transfer_stage.h"
 #include "io/bubble_track_file.h"
 #include "io/frame_surface.h"
 #include "io/input_error.h"
@@ -37,12 +37,12 @@ CLI::App* addTransferCommand(CLI::App& app, TransferOptions& o) {
 namespace {
 
 /// The transfer stage's progress on the terminal; a signal stops it between chunks of frames.
-class TransferObserver : public acoustics::StageObserver {
+class TransferObserver : public StageObserver {
  public:
   explicit TransferObserver(bool quiet) : quiet_(quiet) {}
   void started(double frames) override { display_.emplace("transfer", frames, "frames", quiet_); }
   void progress(double fraction) override { display_->update(fraction); }
-  void checkpoint(const std::string& where) override { io::throwIfInterrupted(where); }
+  bool wasInterrupted() override { return io::interruptionRequested(); }
   void finish() {
     if (display_) display_->finish();
   }
@@ -57,7 +57,7 @@ acoustics::TransferSetup transferSetup(const sim::Scene& scene,
                                        const acoustics::OscillatorModel& model) {
   acoustics::TransferSetup setup;
   for (const sim::Listener& l : scene.listeners) setup.listeners.push_back({l.name, l.position});
-  const sim::Vec3& g = scene.gravity;
+  const Vec3& g = scene.gravity;
   const double gNorm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (gNorm > 0.0) setup.up = {-g[0] / gNorm, -g[1] / gNorm, -g[2] / gNorm};
   setup.fps = scene.time.fps;

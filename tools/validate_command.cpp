@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "acoustics/validation.h"
+#include "acoustics/analysis/validation.h"
 #include "io/text_file.h"
 #include "tools/progress_display.h"
 #include "tools/number_checks.h"

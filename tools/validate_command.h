@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "acoustics/oscillator_model.h"
+#include "acoustics/bubble/oscillator_model.h"
 #include "tools/command_options.h"
 
 namespace fluidsound::tools {

@@ -5,14 +5,14 @@
 #include <benchmark/benchmark.h>
 #include <oneapi/tbb/info.h>
 
-#include "sim/fluid_solver.h"
+#include "sim/fluid/fluid_solver.h"
 
 namespace {
 
 using namespace fluidsound::sim;
 
-Scene damBreak(int cells) {
-  Scene s;
+FluidScene damBreak(int cells) {
+  FluidScene s;
   s.domain.max = {1.0, 1.0, 1.0};
   s.domain.cell = 1.0 / cells;
   s.time.duration = 1.0;

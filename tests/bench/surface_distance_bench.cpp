@@ -13,9 +13,9 @@
 
 #include "io/scene_file.h"
 #include "io/scene_meshes.h"
-#include "sim/bubble_model.h"
-#include "sim/fluid_solver.h"
-#include "sim/liquid_distance.h"
+#include "sim/bubbles/bubble_model.h"
+#include "sim/fluid/fluid_solver.h"
+#include "sim/bubbles/liquid_distance.h"
 
 namespace {
 

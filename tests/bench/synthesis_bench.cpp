@@ -19,8 +19,8 @@
 #include <random>
 #include <string>
 
-#include "acoustics/oscillator_kernel.h"
-#include "acoustics/synthesizer.h"
+#include "acoustics/synthesis/oscillator_kernel.h"
+#include "acoustics/synthesis/synthesizer.h"
 
 namespace {
 

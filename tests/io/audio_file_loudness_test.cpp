@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "acoustics/loudness.h"
+#include "acoustics/analysis/loudness.h"
 #include "io/audio_file.h"
 #include "support/temp_folder.h"
 

@@ -60,7 +60,7 @@ TEST(ExampleScenes, EverySceneParsesAndLoadsItsMeshes) {
 
 // Claim: every mesh in scenes/meshes/ is closed (every edge shared by two triangles running along
 // it in opposite directions) and oriented outward (positive signed volume). Reference: the rule
-// of sim/mesh_closedness.h, which the scenes' loader enforces.
+// of sim/fluid/mesh_closedness.h, which the scenes' loader enforces.
 TEST(ExampleMeshes, EveryMeshIsClosedAndOutward) {
   const std::vector<fs::path> meshes = filesEndingWith(sourceDir() / "scenes" / "meshes", ".obj");
   EXPECT_GE(meshes.size(), 2u) << "glass.obj and basin.obj at least";

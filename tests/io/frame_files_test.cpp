@@ -1,4 +1,5 @@
 // Tests of io/frame_files.h: the per-frame VDB and PLY files read back with OpenVDB and by hand.
+#include "sim/scene.h"
 #include "io/frame_files.h"
 
 #include <gtest/gtest.h>
@@ -8,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim/fluid_solver.h"
+#include "sim/fluid/fluid_solver.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::io {

@@ -1,4 +1,5 @@
 // Tests of io/frame_surface.h: the free surface above a bubble, read back from a frame file.
+#include "sim/scene.h"
 #include "io/frame_surface.h"
 
 #include <gtest/gtest.h>
@@ -8,7 +9,7 @@
 
 #include "io/frame_files.h"
 #include "io/input_error.h"
-#include "sim/fluid_solver.h"
+#include "sim/fluid/fluid_solver.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::io {
@@ -38,7 +39,7 @@ TEST(FrameSurface, FlatLayerGivesAnUpwardPlaneAtTheSurface) {
   test::TempFolder folder;
   const FrameSurface surface(layerFrame(folder));
   for (const double y : {0.015, 0.025, 0.034}) {
-    const acoustics::Vec3 centre{0.05, y, 0.05};
+    const Vec3 centre{0.05, y, 0.05};
     // The track's depth may be off (the simulation's surface differs a little): start 2 mm wrong.
     const acoustics::LocalSurface s = surface.surfaceAbove(centre, 0.04 - y + 0.002, {0.0, 1.0, 0.0});
     EXPECT_NEAR(s.normal[1], 1.0, 0.05);
@@ -54,7 +55,7 @@ TEST(FrameSurface, BeyondTheBandFallsBackToTheHorizontalPlane) {
   test::TempFolder folder;
   const FrameSurface surface(layerFrame(folder));
   const acoustics::LocalSurface s = surface.surfaceAbove({0.05, 0.01, 0.05}, 0.08, {0.0, 1.0, 0.0});
-  EXPECT_EQ(s.normal, (acoustics::Vec3{0.0, 1.0, 0.0}));
+  EXPECT_EQ(s.normal, (Vec3{0.0, 1.0, 0.0}));
   EXPECT_DOUBLE_EQ(s.depth, 0.08);
   EXPECT_DOUBLE_EQ(s.point[1], 0.09);
 }

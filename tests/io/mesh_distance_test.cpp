@@ -12,15 +12,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/mesh_closedness.h"
-#include "sim/solid_geometry.h"
+#include "sim/fluid/mesh_closedness.h"
+#include "sim/fluid/solid_geometry.h"
 #include "support/reference_distances.h"
 #include "support/test_meshes.h"
 
 namespace fluidsound::io {
 namespace {
 
-using sim::Vec3;
 
 /// OpenVDB returns the closest-triangle distance as a float in world units. For the grids below
 /// (≤ 51 nodes per axis, h ≤ 1 cm, so |x| ≤ 0.5 m) float rounding of the positions and the

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "sim/scene.h"
-#include "sim/solid_geometry.h"
+#include "sim/fluid/solid_geometry.h"
 #include "support/test_meshes.h"
 
 namespace fluidsound::io {
@@ -32,7 +32,7 @@ sim::GridGeometry gridOf(const sim::Domain& domain) {
 }
 
 /// Exact signed distance from p to the axis-aligned box [lo, hi], negative inside.
-double boxDistance(const sim::Vec3& lo, const sim::Vec3& hi, const sim::Vec3& p) {
+double boxDistance(const Vec3& lo, const Vec3& hi, const Vec3& p) {
   double outside = 0.0, inside = -1e300;
   for (int a = 0; a < 3; ++a) {
     const double d = std::max(lo[a] - p[a], p[a] - hi[a]);
@@ -65,7 +65,7 @@ TEST(RegionFreeSurface, FacesAgainstSolidsAndWallsAreNoSurface) {
   for (int k = 0; k < 16; ++k)
     for (int j = 0; j < 16; ++j)
       for (int i = 0; i < 16; ++i) {
-        const sim::Vec3 x = grid.cellCentre(i, j, k);
+        const Vec3 x = grid.cellCentre(i, j, k);
         if (x[0] < wallX || x[2] > wallZ || std::abs(x[1] - kLevel) > 1.5 * kCell) continue;
         EXPECT_NEAR(phi(i, j, k), x[1] - kLevel, 1e-5 * kCell) << i << " " << j << " " << k;
         ++checked;
@@ -103,7 +103,7 @@ TEST(RegionFreeSurface, ARegionClearOfSolidsIsAllSurface) {
   domain.open.fill(true);
   const sim::GridGeometry grid = gridOf(domain);
   const sim::Array3f solidNodes = sim::solidNodeDistance(grid, domain, {}, 0.0);
-  const sim::Vec3 lo{0.04, 0.03, 0.05}, hi{0.12, 0.1, 0.11};
+  const Vec3 lo{0.04, 0.03, 0.05}, hi{0.12, 0.1, 0.11};
   const sim::TriangleMesh water = test::boxMesh({0.04f, 0.03f, 0.05f}, {0.12f, 0.1f, 0.11f});
   const sim::Array3f phi = regionFreeSurfaceAtCentres(water, solidNodes, grid);
   int checked = 0;

@@ -80,7 +80,7 @@ TEST(SceneFile, AbsentOptionalFieldsTakeTheirDefaults) {
   const sim::Scene scene = parseScene(minimalScene().dump(), "tank.json");
   EXPECT_EQ(scene.file, fs::path("tank.json"));
   EXPECT_EQ(scene.domain.open, (std::array<bool, 6>{}));  // closed box
-  EXPECT_EQ(scene.gravity, (sim::Vec3{0, -9.81, 0}));
+  EXPECT_EQ(scene.gravity, (Vec3{0, -9.81, 0}));
   EXPECT_EQ(scene.time.duration, 1.5);
   EXPECT_EQ(scene.time.fps, 30.0);
   EXPECT_EQ(scene.time.cfl, 1.0);

@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "io/input_error.h"
-#include "sim/fluid_solver.h"
-#include "sim/particle_seeding.h"
-#include "sim/solid_geometry.h"
+#include "sim/fluid/fluid_solver.h"
+#include "sim/fluid/particle_seeding.h"
+#include "sim/fluid/solid_geometry.h"
 #include "support/input_error_expectations.h"
 #include "support/temp_folder.h"
 #include "support/test_meshes.h"
@@ -126,7 +126,7 @@ TEST(SceneMeshes, PathShiftsAMeshSolid) {
   mesh.path = {{0.0, {0, 0, 0}}, {1.0, {0.05, 0.02, 0.0}}};
   scene.solids.push_back(mesh);
   loadSceneMeshes(scene);
-  const sim::Vec3 shift{0.025, 0.01, 0.0};  // at t = 0.5
+  const Vec3 shift{0.025, 0.01, 0.0};  // at t = 0.5
   sim::Scene still = scene;
   still.solids[0].path.clear();
   const sim::Array3f moved = sim::solidNodeDistance(scene.grid(), sim::Domain{scene.domain.min, scene.domain.max,
@@ -136,8 +136,8 @@ TEST(SceneMeshes, PathShiftsAMeshSolid) {
   for (int k = 0; k <= grid.cells[2]; ++k)
     for (int j = 0; j <= grid.cells[1]; ++j)
       for (int i = 0; i <= grid.cells[0]; ++i) {
-        const sim::Vec3 p = grid.worldFromGrid({double(i), double(j), double(k)});
-        const sim::Vec3 back{p[0] - shift[0], p[1] - shift[1], p[2] - shift[2]};
+        const Vec3 p = grid.worldFromGrid({double(i), double(j), double(k)});
+        const Vec3 back{p[0] - shift[0], p[1] - shift[1], p[2] - shift[2]};
         const double expected = sim::meshDistance(std::get<sim::MeshFile>(still.solids[0].shape), back);
         if (std::abs(expected) < 0.5 * kCell || std::abs(expected) > 1.2 * kCell) continue;
         ASSERT_NEAR(moved(i, j, k), expected, 1e-4 * kCell);

@@ -2,6 +2,7 @@
 // naming the file and the part of it, before OpenVDB allocates what its lengths say (cases found
 // by tests/fuzz/frame_vdb_fuzz; their inputs are in tests/fuzz/corpus/frame_vdb/), and the
 // reader (io/frame_surface.h) that calls the check first turns any damage into an InputError.
+#include "sim/scene.h"
 #include "io/vdb_file_check.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,7 @@
 #include "io/frame_files.h"
 #include "io/frame_surface.h"
 #include "io/input_error.h"
-#include "sim/fluid_solver.h"
+#include "sim/fluid/fluid_solver.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::io {

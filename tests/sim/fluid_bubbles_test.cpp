@@ -1,4 +1,4 @@
-// Tests of the bubble model running inside the liquid solver (sim/bubble_model.h on FluidSolver's
+// Tests of the bubble model running inside the liquid solver (sim/bubbles/bubble_model.h on FluidSolver's
 // substeps, as sim::simulate runs it): the issue 6 claims that need the real solver.
 #include <gtest/gtest.h>
 

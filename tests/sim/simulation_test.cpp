@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/bubble_model.h"
-#include "sim/fluid_solver.h"
-#include "sim/simulation_failure.h"
+#include "sim/bubbles/bubble_model.h"
+#include "sim/fluid/fluid_solver.h"
+#include "sim/fluid/simulation_failure.h"
 #include "support/small_tank.h"
 
 namespace fluidsound::sim {

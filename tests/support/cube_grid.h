@@ -1,7 +1,7 @@
 // tests/support/cube_grid.h — a cubic MAC grid at the origin, as the particle tests build it.
 #pragma once
 
-#include "sim/grid.h"
+#include "sim/fluid/grid.h"
 
 namespace fluidsound::test {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "acoustics/bubble_oscillator.h"
-#include "acoustics/synthesizer.h"
+#include "acoustics/bubble/bubble_oscillator.h"
+#include "acoustics/synthesis/synthesizer.h"
 
 namespace fluidsound::test {
 

@@ -1,6 +1,6 @@
 // tests/support/frame_rate_lines.h — the frame-rate check of issue 6 ("no line at the frame rate
 // or its harmonics stands out of the spectrum"), shared by the unit test that shows it can fail
-// (tests/acoustics/spectrum_statistics_test.cpp) and the end-to-end pour
+// (tests/acoustics/analysis/spectrum_statistics_test.cpp) and the end-to-end pour
 // (tests/tools/pour_spectrum_test.cpp). docs/synthesis.md, "What the spectrum shows".
 #pragma once
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "acoustics/power_spectrum.h"
-#include "acoustics/spectrum_statistics.h"
+#include "acoustics/analysis/power_spectrum.h"
+#include "acoustics/analysis/spectrum_statistics.h"
 
 namespace fluidsound::test {
 

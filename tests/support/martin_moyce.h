@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "sim/fluid_solver.h"
+#include "sim/fluid/fluid_solver.h"
 #include "sim/scene.h"
 
 namespace fluidsound::test::martin_moyce {
@@ -87,7 +87,7 @@ inline sim::Scene damBreakScene(int cellsPerWidth) {
 
 /// √(n² g / a) [1/s]: T = t · timeScale.
 inline double timeScale(const sim::Scene& scene) {
-  const sim::Vec3& g = scene.gravity;
+  const Vec3& g = scene.gravity;
   return std::sqrt(kHeightOverWidth * std::hypot(g[0], g[1], g[2]) / kColumnWidth);
 }
 

@@ -7,9 +7,9 @@
 
 #include <algorithm>
 
-#include "sim/fluid_solver.h"
-#include "sim/particle_seeding.h"
-#include "sim/solid_geometry.h"
+#include "sim/fluid/fluid_solver.h"
+#include "sim/fluid/particle_seeding.h"
+#include "sim/fluid/solid_geometry.h"
 
 namespace fluidsound::test {
 
@@ -22,7 +22,7 @@ struct RestMeasure {
   double maxSpeed = 0.0, heightSpread = 0.0;
   int columns = 0;
 };
-inline RestMeasure restAfter(sim::Scene scene, double seconds) {
+inline RestMeasure restAfter(sim::FluidScene scene, double seconds) {
   scene.solver.surface = sim::SurfaceMethod::LevelSet;
   sim::FluidSolver solver(scene);
   sim::FrameStats stats;
@@ -43,7 +43,7 @@ inline RestMeasure restAfter(sim::Scene scene, double seconds) {
       for (int j = 0; j + 1 < g.cells[1]; ++j) {
         if (!(phi(i, j, k) < 0.0f && phi(i, j + 1, k) >= 0.0f)) continue;
         const double f = phi(i, j, k) / (phi(i, j, k) - phi(i, j + 1, k));
-        const sim::Vec3 at{g.cellCentre(i, j, k)[0], g.cellCentre(i, j, k)[1] + f * g.cellSize,
+        const Vec3 at{g.cellCentre(i, j, k)[0], g.cellCentre(i, j, k)[1] + f * g.cellSize,
                            g.cellCentre(i, j, k)[2]};
         if (sim::interpolateNodes(solids, g, at) >
             0.5 * g.cellSize) {  // a free surface, not a contact line

@@ -8,7 +8,7 @@ namespace fluidsound::test {
 
 /// @param liquidMax  the liquid box's far corner [m] (its near corner is the origin)
 /// @param duration   the scene's length [s]
-inline sim::Scene smallTank(const sim::Vec3& liquidMax, double duration) {
+inline sim::Scene smallTank(const Vec3& liquidMax, double duration) {
   sim::Scene scene;
   scene.domain.max = {0.08, 0.08, 0.08};
   scene.domain.cell = 0.01;

@@ -12,12 +12,12 @@
 #include <random>
 #include <vector>
 
-#include "sim/array3.h"
-#include "sim/grid.h"
-#include "sim/liquid_state.h"
-#include "sim/mac_velocity.h"
-#include "sim/particle_seeding.h"
-#include "sim/particles.h"
+#include "sim/fluid/array3.h"
+#include "sim/fluid/grid.h"
+#include "sim/fluid/liquid_state.h"
+#include "sim/fluid/mac_velocity.h"
+#include "sim/fluid/particle_seeding.h"
+#include "sim/fluid/particles.h"
 #include "sim/scene.h"
 
 namespace fluidsound::test {
@@ -57,10 +57,10 @@ class SyntheticTank {
         for (int i = 0; i < cells; ++i)
           for (int s = 0; s < perCell; ++s) {
             const int sub[3] = {s % strata, (s / strata) % strata, s / (strata * strata)};
-            sim::Vec3 g{i + (sub[0] + unit(random_)) / strata, j + (sub[1] + unit(random_)) / strata,
+            Vec3 g{i + (sub[0] + unit(random_)) / strata, j + (sub[1] + unit(random_)) / strata,
                         k + (sub[2] + unit(random_)) / strata};
             if (strata == 1) g = {i + unit(random_), j + unit(random_), k + unit(random_)};
-            const sim::Vec3 p = grid_.worldFromGrid(g);
+            const Vec3 p = grid_.worldFromGrid(g);
             if (p[1] < surface && solidDistance(p) > 0.0) add(p, {0.0, 0.0, 0.0});
           }
   }
@@ -74,7 +74,7 @@ class SyntheticTank {
   std::size_t size() const { return position_.size(); }
 
   /// Exact signed distance to the solids [m]: the five closed walls and the box, if any.
-  double solidDistance(const sim::Vec3& p) const {
+  double solidDistance(const Vec3& p) const {
     const double extent = grid_.cells[0] * grid_.cellSize;
     double d = std::min({p[0], extent - p[0], p[1], p[2], extent - p[2]});
     if (box_) d = std::min(d, sim::regionDistance(sim::LiquidRegion{*box_, {}}, p));
@@ -85,7 +85,7 @@ class SyntheticTank {
     return sim::LiquidState{position_, particleVelocity_, id_, phi_, velocity_, solid_, grid_};
   }
 
-  void add(const sim::Vec3& p, const sim::Vec3& v) {
+  void add(const Vec3& p, const Vec3& v) {
     position_.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
     particleVelocity_.push_back({static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])});
     id_.push_back(nextId_++);
@@ -97,7 +97,7 @@ class SyntheticTank {
     for (int k = 0; k < v.nk(); ++k)
       for (int j = 0; j < v.nj(); ++j)
         for (int i = 0; i < v.ni(); ++i) {
-          const sim::Vec3 f = grid_.worldFromGrid({i + 0.5, 1.0 * j, k + 0.5});
+          const Vec3 f = grid_.worldFromGrid({i + 0.5, 1.0 * j, k + 0.5});
           if (insideCylinder(jet, f) && f[1] > from && f[1] < to) v(i, j, k) = static_cast<float>(-jet.speed);
         }
   }
@@ -108,7 +108,7 @@ class SyntheticTank {
   void driveJet(const Jet& jet, double dt, int perCell = 8) {
     const double drop = jet.speed * dt;
     for (std::size_t p = 0; p < position_.size(); ++p) {
-      const sim::Vec3 x{position_[p][0], position_[p][1], position_[p][2]};
+      const Vec3 x{position_[p][0], position_[p][1], position_[p][2]};
       if (!insideCylinder(jet, x) || x[1] <= jet.bottom || x[1] > jet.top) continue;
       const double y = std::max(x[1] - drop, jet.bottom);
       position_[p][1] = static_cast<float>(y);
@@ -120,7 +120,7 @@ class SyntheticTank {
     carry_ = count - whole;
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int n = 0; n < whole;) {
-      const sim::Vec3 p{jet.x + jet.radius * (2.0 * unit(random_) - 1.0), jet.top - drop * unit(random_),
+      const Vec3 p{jet.x + jet.radius * (2.0 * unit(random_) - 1.0), jet.top - drop * unit(random_),
                         jet.z + jet.radius * (2.0 * unit(random_) - 1.0)};
       if (!insideCylinder(jet, p)) continue;
       add(p, {0.0, -jet.speed, 0.0});
@@ -140,7 +140,7 @@ class SyntheticTank {
   }
 
  private:
-  static bool insideCylinder(const Jet& jet, const sim::Vec3& p) {
+  static bool insideCylinder(const Jet& jet, const Vec3& p) {
     return (p[0] - jet.x) * (p[0] - jet.x) + (p[2] - jet.z) * (p[2] - jet.z) <= jet.radius * jet.radius;
   }
 

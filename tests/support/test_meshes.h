@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/triangle_mesh.h"
+#include "sim/fluid/triangle_mesh.h"
 
 namespace fluidsound::test {
 

@@ -14,8 +14,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "acoustics/loudness.h"
-#include "acoustics/oscillator_kernel.h"
+#include "acoustics/analysis/loudness.h"
+#include "acoustics/synthesis/oscillator_kernel.h"
 #include "io/audio_file.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
@@ -114,7 +114,7 @@ TEST(AudioOutput, SynthReportsTheCalibratedScaleLoudnessAndChannelNames) {
 
 // Claim (issue 17): synth's report names the oscillator kernel that ran, so its
 // oscillator_samples_per_second says what it measured: the widest this CPU runs, as the
-// synthesizer picks without being told (acoustics/oscillator_kernel.h).
+// synthesizer picks without being told (acoustics/synthesis/oscillator_kernel.h).
 TEST(AudioOutput, SynthReportNamesTheOscillatorKernelThatRan) {
   const TempFolder folder;
   const fs::path bubbles = writeText(folder.path() / "b.json", kThreeListeners);

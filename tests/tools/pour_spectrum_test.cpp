@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "acoustics/centroid_prediction.h"
-#include "acoustics/power_spectrum.h"
-#include "acoustics/spectrum_statistics.h"
-#include "acoustics/synthesizer.h"
+#include "acoustics/analysis/centroid_prediction.h"
+#include "acoustics/analysis/power_spectrum.h"
+#include "acoustics/analysis/spectrum_statistics.h"
+#include "acoustics/synthesis/synthesizer.h"
 #include "io/audio_file.h"
 #include "io/bubble_track_file.h"
 #include "support/command_runner.h"

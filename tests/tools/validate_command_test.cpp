@@ -63,7 +63,7 @@ class ValidateSwitches : public ::testing::TestWithParam<Switches> {};
 // Claim (issue 16 §4): no switch of `validate` reaches an internal error; the run prints its table
 // (a header, one row per check, the summary line) and the exit status matches the rows: 0 when
 // all pass, 1 when any fails. The exit codes are not what the code happens to give but what the
-// model must give: the documented models pass every check (tests/acoustics/validation_test.cpp
+// model must give: the documented models pass every check (tests/acoustics/analysis/validation_test.cpp
 // holds them to the published tables); a chirp rise of 5 pushes a 1 mm bubble's pitch past
 // Nyquist (f₀(1 + 5·ln(10^4.5)) = 174 kHz), and ε = 1e300 overflows float samples, so both fail.
 TEST_P(ValidateSwitches, PrintTheTableAndNeverExitFive) {
