@@ -94,6 +94,8 @@ int runTransferCommand(const TransferOptions& o) {
     const bool aboutTracks = e.input() == acoustics::TransferInput::Tracks;
     throw io::InputError(aboutTracks ? tracksPath.string() : scene.file.string(), e.field(),
                          e.expected(), e.found());
+  } catch (const StageInterrupted& e) {
+    throw io::Interrupted(io::interruptionSignal(), e.what());
   }
   observer.finish();
   io::writeBubbleTracks(tracksPath, result.tracks);
