@@ -97,6 +97,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options,
   FrameLoop loop(scene, observer);
   SimulationResult result;
   double loopSeconds = 0.0;
+  observer.started(last + 1);
   for (int f = 0; f <= last; ++f) {
     if (observer.wasInterrupted()) {
       result.interrupted = SimulationStop{f, false};

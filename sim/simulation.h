@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/bubbles/bubble_history.h"
+#include "sim/core/stage_observer.h"
 #include "sim/fluid/fluid_solver.h"
 #include "sim/scene.h"
 
@@ -43,17 +44,15 @@ struct FrameRecord {
   double observerSeconds = 0.0;    ///< wall time of the observer's onFrame for it [s]
 };
 
-/// @brief How a caller follows and stops `simulate` (OpenVDB's interrupter pattern).
-class SimulationObserver {
+/// @brief How a caller follows and stops `simulate` (OpenVDB's interrupter pattern): the stage
+///        observer's calls (started with the frame count, progress after each frame's onFrame
+///        with the share done in (0, 1], wasInterrupted before every frame and every substep:
+///        true stops the simulation there, the frame being made is dropped and the result says
+///        where), plus every frame as it is made.
+class SimulationObserver : public StageObserver {
  public:
-  virtual ~SimulationObserver() = default;
   /// Called after every frame 0 … lastFrame, in order. May throw: simulate then stops with it.
   virtual void onFrame(const FrameView& /*state*/, const FrameRecord& /*record*/) {}
-  /// Called after onFrame with the share of the frames done, in (0, 1].
-  virtual void progress(double /*fraction*/) {}
-  /// Asked before every frame and every substep: true stops the simulation there (the frame
-  /// being made is dropped; the result says where).
-  virtual bool wasInterrupted() { return false; }
 };
 
 /// Where an interrupted simulation stopped.

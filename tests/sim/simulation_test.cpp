@@ -26,7 +26,9 @@ struct RecordingObserver : SimulationObserver {
   std::vector<int> frames, kept;
   std::vector<FrameRecord> records;
   std::vector<double> fractions;
+  double totalFrames = -1.0;
   int calls = 0, stopAtCall = 0;
+  void started(double frames) override { totalFrames = frames; }
   void onFrame(const FrameView& state, const FrameRecord& record) override {
     frames.push_back(record.frame);
     if (state.kept) kept.push_back(record.frame);
@@ -43,6 +45,7 @@ TEST(Simulation, FramesReachTheObserverInOrderWithTheSolversStats) {
   const SimulationResult result = simulate(scene, {2, std::nullopt}, observer);
   EXPECT_EQ(observer.frames, (std::vector<int>{0, 1, 2, 3}));
   EXPECT_EQ(observer.kept, (std::vector<int>{2, 3}));
+  EXPECT_EQ(observer.totalFrames, 4.0);
   EXPECT_EQ(observer.fractions, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
   EXPECT_FALSE(result.interrupted);
   ASSERT_EQ(result.frames.size(), 4u);

@@ -65,6 +65,27 @@ class SpawnedFluidsound {
     return false;
   }
 
+  /// @return true once the process has installed its SIGINT and SIGTERM handlers (the SigCgt
+  ///         mask of /proc/PID/status, read only) and, if `syscall` ≥ 0, its main thread is in
+  ///         that system call (the first field of /proc/PID/syscall); false after `timeout` or
+  ///         if it ended. A signal sent then reaches the handler, however loaded the machine.
+  bool waitUntilHandling(std::chrono::milliseconds timeout, int syscall = -1) const {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    const std::string proc = "/proc/" + std::to_string(pid_);
+    const unsigned long long wanted = (1ull << (SIGINT - 1)) | (1ull << (SIGTERM - 1));
+    while (std::chrono::steady_clock::now() < end) {
+      const std::string status = fileBytes(proc + "/status");
+      const std::size_t at = status.find("SigCgt:");
+      if (at == std::string::npos) return false;  // ended (or no /proc)
+      const unsigned long long caught = std::stoull(status.substr(at + 7), nullptr, 16);
+      if ((caught & wanted) == wanted &&
+          (syscall < 0 || fileBytes(proc + "/syscall").starts_with(std::to_string(syscall) + " ")))
+        return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+  }
+
   void signal(int signalNumber) const { ::kill(pid_, signalNumber); }
 
   /// @return the exit code, or -1 if the process did not exit normally

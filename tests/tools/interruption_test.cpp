@@ -139,6 +139,7 @@ TEST(Interruption, SigtermEndsSynthWithNothingWritten) {
   SpawnedFluidsound process({"synth", bubbles.string(), "-o", (folder.path() / "o.wav").string(), "--spectrogram",
                              (folder.path() / "o.png").string(), "--threads", "1"},
                             folder.path() / "stdout.txt", folder.path() / "stderr.txt");
+  ASSERT_TRUE(process.waitUntilHandling(30s));
   std::this_thread::sleep_for(300ms);
   process.signal(SIGTERM);
   EXPECT_EQ(process.wait(), 143) << process.err();
@@ -155,7 +156,9 @@ TEST(Interruption, SigintEndsAWaitForAFifoReader) {
   ASSERT_TRUE(makeFifo(fifo));
   SpawnedFluidsound process({"synth", bubbles.string(), "-o", fifo.string(), "-q"}, folder.path() / "stdout.txt",
                             folder.path() / "stderr.txt");
-  std::this_thread::sleep_for(300ms);
+  // Signalled once it waits for the reader: its main thread sleeps between tries of open()
+  // (clock_nanosleep, system call 230 on x86-64).
+  ASSERT_TRUE(process.waitUntilHandling(30s, 230)) << "the command never waited for a FIFO reader";
   process.signal(SIGINT);
   EXPECT_EQ(process.wait(), 130) << process.err();
   EXPECT_EQ(lastLine(process.err()), "fluidsound: interrupted (SIGINT) at waiting for a reader of " + fifo.string());
