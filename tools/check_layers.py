@@ -10,7 +10,8 @@ else, so of sim/ and acoustics/ it may include only the record headers of IO_REC
 
 It prints one line per violation, `FILE: includes HEADER: WHY`, and exits 1 if there is any
 (0 if none). An include of a header that does not exist, or of a folder that is no library's,
-is a violation too, and so is a cycle in the link graph.
+is a violation too, and so is a cycle in the link graph, and a README "Layout" table that misses a
+library folder or names another target for it than CMake builds from it.
 
 usage: tools/check_layers.py [--root DIR] [--graph] [--records] [--self-test]
   --root DIR   the source tree (default: the one this script is in)
@@ -35,7 +36,7 @@ CXX_SUFFIXES = (".h", ".hpp", ".cpp", ".cc", ".inl")
 IO_RECORD_HEADERS = {
     "sim/core/vec3.h": "a point in space [m], part of every record below",
     "sim/scene.h": "the scene record that fluidsound.scene/1 is parsed into",
-    "sim/fluid/fluid_scene.h": "the solver's part of the scene record (domain, liquid, solids, time)",
+    "sim/fluid/fluid_scene.h": "the solver's part of the scene record (domain, liquid, solids)",
     "sim/fluid/triangle_mesh.h": "the mesh record an OBJ or PLY file is read into",
     "sim/bubbles/bubble_settings.h": "the scene's `bubbles` block as a record",
     "sim/bubbles/bubble_history.h": "the bubble model's output, written as bubbles.json",
@@ -58,6 +59,8 @@ class Violation:
     why: str
 
     def line(self):
+        if self.header == "-":
+            return f"{self.file}: {self.why}"
         return f"{self.file}: includes {self.header}: {self.why}"
 
 
@@ -94,8 +97,9 @@ def cmake_files(root):
         parts = path.relative_to(root).parts[:-1]
         if any(p.startswith((".", "build")) for p in parts):
             continue
-        if any((root.joinpath(*parts[:k]) / "CMakeCache.txt").exists() for k in range(1, len(parts) + 1)):
-            continue
+        if any((root.joinpath(*parts[:k]) / "CMakeCache.txt").exists()
+               for k in range(1, len(parts) + 1)):
+            continue  # a build folder of another name
         found.append(path)
     return found
 
@@ -246,10 +250,44 @@ def check_include(root, graph, folder, source, header):
     return None
 
 
+def layout_rows(readme):
+    """{folder: target column} of the README's "Layout" table (folders without their "/")."""
+    rows, inside = {}, False
+    for line in readme.read_text(encoding="utf-8").splitlines():
+        if line.startswith("## "):
+            inside = line.strip() == "## Layout"
+        cells = [c.strip() for c in line.strip().strip("|").split("|")] if inside else []
+        if len(cells) >= 3 and re.fullmatch(r"`[^`]+`", cells[0]):
+            rows[cells[0].strip("`").rstrip("/")] = cells[-1]
+    return rows
+
+
+def layout_violations(root, graph):
+    """The README's layout table must list every library folder with the target CMake builds."""
+    readme = root / "README.md"
+    if not readme.is_file():
+        return []
+    rows, found = layout_rows(readme), []
+    for folder in LIBRARY_FOLDERS:
+        target = graph.folder_target(folder)
+        names = [a for a, t in graph.aliases.items() if target and t == target.name]
+        names = names or ([target.name] if target else [])
+        if folder not in rows:
+            found.append(Violation("README.md", "-", f"the Layout table has no row for {folder}/"))
+        elif names and not any(f"`{n}`" in rows[folder] for n in names):
+            found.append(Violation("README.md", "-", f"the Layout table's target of {folder}/ is "
+                                   f"not `{names[0]}`, which CMake builds from it"))
+    for folder in rows:
+        if not (root / folder).is_dir():
+            found.append(Violation("README.md", "-",
+                                   f"the Layout table lists {folder}/, which is not in the tree"))
+    return found
+
+
 def check(root):
     """Every violation of the tree at `root`, sorted."""
     graph = LinkGraph(root)
-    violations = graph.cycles()
+    violations = graph.cycles() + layout_violations(root, graph)
     for folder in LIBRARY_FOLDERS:
         if graph.folder_target(folder) is None:
             violations.append(Violation(f"{folder}/", "-", "no CMake target is built from it"))

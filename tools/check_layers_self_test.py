@@ -1,10 +1,10 @@
 """The self-test of tools/check_layers.py (`check_layers.py --self-test`): the checker CAN fail.
 
 It copies the tree's CMakeLists.txt files and library sources to a temporary folder, removes the
-includes the checker reports there (so that the copy passes: the checker can also pass), then in
-fresh copies adds one bad include or changes one link and requires exactly the violations that
-change makes, no more and no fewer; a harmless change must add none. One case runs the script
-itself, for its exit codes and its output line.
+includes the checker reports there (so that the copy passes: the checker can also pass), then
+adds one bad include or changes one link at a time (undone after each) and requires exactly the
+violations that change makes, no more and no fewer; a harmless change must add none. One case
+runs the script itself, for its exit codes and its output line.
 """
 import pathlib
 import shutil
@@ -16,14 +16,17 @@ import check_layers as layers
 
 
 def copy_tree(root, destination):
-    """The CMake files and library folders' C++ files of `root`, copied under `destination`."""
-    files = list(layers.cmake_files(root))
+    """The CMake files, the README and the library folders' C++ files of `root`, copied under
+    `destination`, and the other folders of the README's layout table, empty."""
+    files = list(layers.cmake_files(root)) + [root / "README.md"]
     for folder in layers.LIBRARY_FOLDERS:
         files += layers.folder_sources(root, folder)
     for path in files:
         target = destination / path.relative_to(root)
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(path, target)
+    for folder in layers.layout_rows(root / "README.md"):  # the folders the README lists
+        (destination / folder).mkdir(parents=True, exist_ok=True)
 
 
 def strip_includes(root, violations):
@@ -33,25 +36,40 @@ def strip_includes(root, violations):
             continue
         path = root / violation.file
         lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
-        kept = [l for l in lines if not (layers.INCLUDE.match(l) and violation.header in l)]
+        kept = [l for l in lines if not (layers.INCLUDE.match(l) and f'"{violation.header}"' in l)]
         path.write_text("".join(kept), encoding="utf-8")
 
 
-def append_line(root, file, line):
-    with open(root / file, "a", encoding="utf-8") as out:
-        out.write(line + "\n")
+class Copy:
+    """The clean copy, changed one case at a time: undo() puts back every file changed."""
 
+    def __init__(self, root):
+        self.root, self.originals = root, {}
 
-def add_include(root, file, header):
-    append_line(root, file, f'#include "{header}"')
+    def text(self, file):
+        text = (self.root / file).read_text(encoding="utf-8")
+        self.originals.setdefault(file, text)
+        return text
 
+    def write(self, file, text):
+        (self.root / file).write_text(text, encoding="utf-8")
 
-def edit(root, file, old, new):
-    path = root / file
-    text = path.read_text(encoding="utf-8")
-    if old not in text:
-        raise AssertionError(f"{file} has no {old!r} to change (the self-test needs updating)")
-    path.write_text(text.replace(old, new, 1), encoding="utf-8")
+    def append_line(self, file, line):
+        self.write(file, self.text(file) + line + "\n")
+
+    def add_include(self, file, header):
+        self.append_line(file, f'#include "{header}"')
+
+    def edit(self, file, old, new):
+        text = self.text(file)
+        if old not in text:
+            raise AssertionError(f"{file} has no {old!r} to change (the self-test needs updating)")
+        self.write(file, text.replace(old, new, 1))
+
+    def undo(self):
+        for file, text in self.originals.items():
+            self.write(file, text)
+        self.originals = {}
 
 
 def first_source(root, folder):
@@ -63,21 +81,22 @@ def bad_include_cases(clean):
     fluid, synthesis = first_source(clean, "sim/fluid"), first_source(clean, "acoustics/synthesis")
     return [
         ("an upstream folder includes a downstream one (sim/fluid -> sim/bubbles)",
-         lambda r: add_include(r, fluid, "sim/bubbles/bubble_model.h"),
+         lambda c: c.add_include(fluid, "sim/bubbles/bubble_model.h"),
          [(fluid, "sim/bubbles/bubble_model.h", "does not link sim/bubbles")]),
         ("acoustics includes the solver, which it does not link",
-         lambda r: add_include(r, synthesis, "sim/fluid/grid.h"),
+         lambda c: c.add_include(synthesis, "sim/fluid/grid.h"),
          [(synthesis, "sim/fluid/grid.h", "does not link sim/fluid")]),
         ("io includes a solver header that is not a record",
-         lambda r: add_include(r, "io/scene_file.h", "sim/fluid/pressure_solver.h"),
+         lambda c: c.add_include("io/scene_file.h", "sim/fluid/pressure_solver.h"),
          [("io/scene_file.h", "sim/fluid/pressure_solver.h", "record headers")]),
         ("an include of a header that does not exist",
-         lambda r: add_include(r, fluid, "sim/fluid/no_such_header.h"),
+         lambda c: c.add_include(fluid, "sim/fluid/no_such_header.h"),
          [(fluid, "sim/fluid/no_such_header.h", "no such header")]),
         ("io includes a record header (allowed)",
-         lambda r: add_include(r, "io/audio_file.h", "sim/scene.h"), []),
-        ("a transitive include through PUBLIC links (acoustics/analysis -> acoustics/bubble, allowed)",
-         lambda r: add_include(r, first_source(r, "acoustics/analysis"), "acoustics/bubble/minnaert.h"),
+         lambda c: c.add_include("io/audio_file.h", "sim/scene.h"), []),
+        ("an include through PUBLIC links (acoustics/analysis -> acoustics/bubble, allowed)",
+         lambda c: c.add_include(first_source(c.root, "acoustics/analysis"),
+                               "acoustics/bubble/minnaert.h"),
          []),
     ]
 
@@ -87,22 +106,27 @@ def link_cases(clean):
     bubbles_fluid = {(s.relative_to(clean).as_posix(), h) for s in
                      layers.folder_sources(clean, "sim/bubbles")
                      for h in layers.project_includes(clean, s) if h.startswith("sim/fluid/")}
-    solver_users = sorted((s.relative_to(clean).as_posix(), h, "does not link " + h.rsplit("/", 1)[0])
-                          for folder in ("io", "tools") for s in layers.folder_sources(clean, folder)
-                          for h in layers.project_includes(clean, s)
-                          if h.startswith(("sim/fluid/", "sim/bubbles/")))
+    solver_users = sorted(
+        (s.relative_to(clean).as_posix(), h, "does not link " + h.rsplit("/", 1)[0])
+        for folder in ("io", "tools") for s in layers.folder_sources(clean, folder)
+        for h in layers.project_includes(clean, s) if h.startswith(("sim/fluid/", "sim/bubbles/")))
     return [
-        ("sim links its parts PRIVATE: io's and tools' includes of them are reported (not passed on)",
-         lambda r: edit(r, "sim/CMakeLists.txt", "fluidsound_sim PUBLIC", "fluidsound_sim PRIVATE"),
+        ("sim links its parts PRIVATE: io's and tools' includes of them are reported",
+         lambda c: c.edit("sim/CMakeLists.txt", "fluidsound_sim PUBLIC", "fluidsound_sim PRIVATE"),
          solver_users),
         ("sim/bubbles no longer links sim_fluid: each of its sim/fluid includes is reported",
-         lambda r: edit(r, "sim/bubbles/CMakeLists.txt",
+         lambda c: c.edit("sim/bubbles/CMakeLists.txt",
                         "PUBLIC fluidsound::sim_fluid", "PUBLIC fluidsound::core"),
          [(f, h, "does not link sim/fluid") for f, h in sorted(bubbles_fluid)]),
+        ("the README's layout table names another target for sim/fluid",
+         lambda c: c.edit("README.md", "`fluidsound::sim_fluid`", "`fluidsound::sim`"),
+         [("README.md", "-", "target of sim/fluid/")]),
         ("a link from core back to acoustics makes a cycle",
-         lambda r: append_line(r, "sim/core/CMakeLists.txt", "target_link_libraries(fluidsound_core "
-                               "INTERFACE fluidsound::acoustics_bubble)"),
-         [("sim/core/CMakeLists.txt", "-", "cycle"), ("acoustics/bubble/CMakeLists.txt", "-", "cycle")]),
+         lambda c: c.append_line("sim/core/CMakeLists.txt",
+                               "target_link_libraries(fluidsound_core INTERFACE "
+                               "fluidsound::acoustics_bubble)"),
+         [("sim/core/CMakeLists.txt", "-", "cycle"),
+          ("acoustics/bubble/CMakeLists.txt", "-", "cycle")]),
     ]
 
 
@@ -119,18 +143,21 @@ def expect(name, found, baseline, expected):
     return matched
 
 
-def exit_codes(script, clean, scratch):
+def exit_codes(script, clean):
     """The script run as a program: 0 on the clean copy; 1 and the line on one bad include."""
-    bad = scratch / "exit"
-    shutil.copytree(clean, bad)
-    add_include(bad, "io/scene_file.h", "sim/fluid/pressure_solver.h")
-    runs = [subprocess.run([sys.executable, str(script), "--root", str(r)], capture_output=True,
-                           text=True) for r in (clean, bad)]
+    runs = []
+    for bad in (False, True):
+        if bad:
+            clean.add_include("io/scene_file.h", "sim/fluid/pressure_solver.h")
+        runs.append(subprocess.run([sys.executable, str(script), "--root", str(clean.root)],
+                                   capture_output=True, text=True))
+    clean.undo()
     line = ("io/scene_file.h: includes sim/fluid/pressure_solver.h: io/ may include of sim/ and "
             "acoustics/ only record headers (tools/check_layers.py --records): this is not one")
     matched = runs[0].returncode == 0 and runs[1].returncode == 1 and \
         runs[1].stdout.splitlines()[0] == line
-    print(("ok:   " if matched else "FAIL: ") + "exit 0 on the clean copy, 1 and one line on a bad one")
+    outcome = "ok:   " if matched else "FAIL: "
+    print(outcome + "exit 0 on the clean copy; 1 and the line on a bad one")
     if not matched:
         print(f"  exit codes {runs[0].returncode}, {runs[1].returncode}; output:\n{runs[1].stdout}")
     return matched
@@ -148,12 +175,12 @@ def run(root):
         baseline = layers.check(clean)
         passes = expect("the copy without the reported includes passes", baseline, [], [])
         results = [faithful, passes]
-        for index, (name, change, expected) in enumerate(bad_include_cases(clean) + link_cases(clean)):
-            copy = scratch / f"case{index}"
-            shutil.copytree(clean, copy)
+        copy = Copy(clean)
+        for name, change, expected in bad_include_cases(clean) + link_cases(clean):
             change(copy)
-            results.append(expect(name, layers.check(copy), baseline, expected))
-        results.append(exit_codes(pathlib.Path(layers.__file__).resolve(), clean, scratch))
+            results.append(expect(name, layers.check(clean), baseline, expected))
+            copy.undo()
+        results.append(exit_codes(pathlib.Path(layers.__file__).resolve(), copy))
     failed = results.count(False)
     print(f"{len(results) - failed} of {len(results)} self-test cases pass")
     return 1 if failed else 0
