@@ -68,11 +68,12 @@ bool RunPipeline::runStage(const StagePlan& plan, const std::function<void()>& b
 }
 
 void RunPipeline::simulate() {
-  SimulateOptions simulate;
-  simulate.common = o_.common;
-  simulate.scene = o_.scene;
-  simulate.output = o_.output;
-  simulate.cell = o_.cell;
+  const SimulateOptions simulate{.common = o_.common,
+                                 .scene = o_.scene,
+                                 .output = o_.output,
+                                 .frames = {},  // all
+                                 .ply = false,
+                                 .cell = o_.cell};
   std::vector<std::string> artefacts = frames_;
   artefacts.insert(artefacts.end(), {"bubbles.json", "report.json"});
   const bool ran = runStage({"simulate", {}, artefacts, hash_}, [&] {
@@ -85,11 +86,8 @@ void RunPipeline::simulate() {
 }
 
 void RunPipeline::transfer() {
-  TransferOptions transfer;
-  transfer.common = o_.common;
-  transfer.scene = o_.scene;
-  transfer.output = o_.output;
-  transfer.model = o_.model;
+  const TransferOptions transfer{
+      .common = o_.common, .scene = o_.scene, .output = o_.output, .model = o_.model};
   std::vector<std::string> reads = frames_;
   reads.push_back("bubbles.json");
   const bool ran = runStage(
@@ -99,14 +97,14 @@ void RunPipeline::transfer() {
 }
 
 void RunPipeline::synth() {
-  SynthOptions synth;
-  synth.common = o_.common;
-  synth.input = (out_ / "bubbles.json").string();
-  synth.audio = o_.audio;
-  synth.output = (out_ / audioFile_).string();
-  synth.spectrogram = (out_ / "spectrogram.png").string();
-  synth.report = (out_ / "synth.report.json").string();
-  synth.model = o_.model;
+  const SynthOptions synth{.common = o_.common,
+                           .input = (out_ / "bubbles.json").string(),
+                           .output = (out_ / audioFile_).string(),
+                           .audio = o_.audio,
+                           .duration = {},  // the file's
+                           .report = (out_ / "synth.report.json").string(),
+                           .spectrogram = (out_ / "spectrogram.png").string(),
+                           .model = o_.model};
   // The synth stage also depends on the audio options: a new --loudness renders again.
   const std::vector<std::string> artefacts = {audioFile_, "spectrogram.png", "synth.report.json"};
   const bool ran = runStage(
