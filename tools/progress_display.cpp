@@ -25,18 +25,18 @@ std::string formatDuration(double seconds) {
 }
 
 ProgressDisplay::ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet)
-    : ProgressDisplay(std::move(stage), totalUnits, std::move(unit), quiet, stderr,
-                      isatty(STDERR_FILENO) != 0, kShowAfterSeconds) {}
+    : ProgressDisplay(std::move(stage), totalUnits, std::move(unit), quiet,
+                      {stderr, isatty(STDERR_FILENO) != 0, kShowAfterSeconds}) {}
 
 ProgressDisplay::ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet,
-                                 std::FILE* stream, bool terminal, double showAfterSeconds)
+                                 const Target& target)
     : stage_(std::move(stage)),
       unit_(std::move(unit)),
       totalUnits_(totalUnits),
-      showAfterSeconds_(showAfterSeconds),
+      showAfterSeconds_(target.showAfterSeconds),
       quiet_(quiet),
-      stream_(stream),
-      terminal_(terminal),
+      stream_(target.stream),
+      terminal_(target.terminal),
       start_(Clock::now()),
       lastLine_(start_) {}
 

@@ -19,10 +19,15 @@ class ProgressDisplay {
   /// @param quiet      show nothing (log() lines too)
   /// Draws on stderr, redrawing in place if stderr is a terminal.
   ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet);
-  /// The same on `stream`, redrawn in place if `terminal`, shown after `showAfterSeconds` (for
-  /// tests and other streams).
+  /// Where a display draws (for tests and other streams than stderr).
+  struct Target {
+    std::FILE* stream = stderr;
+    bool terminal = false;          ///< redraw one line in place
+    double showAfterSeconds = 1.0;  ///< nothing is shown before [s]
+  };
+  /// The same on `target`.
   ProgressDisplay(std::string stage, double totalUnits, std::string unit, bool quiet,
-                  std::FILE* stream, bool terminal, double showAfterSeconds);
+                  const Target& target);
   ~ProgressDisplay();
   ProgressDisplay(const ProgressDisplay&) = delete;
   ProgressDisplay& operator=(const ProgressDisplay&) = delete;

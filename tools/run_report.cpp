@@ -84,13 +84,15 @@ void RunReport::markIncomplete(const std::string& interruptedAt) {
   data_->json["interrupted_at"] = interruptedAt;
 }
 
-std::string RunReport::text() {
+nlohmann::ordered_json RunReport::document() {
   data_->json["peak_memory_bytes"] = peakMemoryBytes();
   nlohmann::ordered_json libraries = nlohmann::ordered_json::object();
   for (const auto& [name, version] : versions()) libraries[name] = version;
   data_->json["versions"] = libraries;
-  return jsonFileText(data_->json);
+  return data_->json;
 }
+
+std::string RunReport::text() { return jsonFileText(document()); }
 
 std::string jsonFileText(const nlohmann::ordered_json& document) {
   return document.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";

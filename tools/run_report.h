@@ -34,6 +34,9 @@ class RunReport {
   void markIncomplete(const std::string& interruptedAt);
 
   /// Adds peak memory and `versions` (an object: library name → version) and returns the document.
+  nlohmann::ordered_json document();
+
+  /// document() as the text of its file (jsonFileText).
   std::string text();
 
   /// text(), written by the output rule (io/output_file.h).

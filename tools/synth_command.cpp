@@ -1,28 +1,22 @@
 // tools/synth_command.cpp — `fluidsound synth` (see synth_command.h, docs/cli.md).
 #include "tools/synth_command.h"
 
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
+#include <chrono>
+#include <cstdio>
+#include <optional>
 
-#include "acoustics/synthesis/oscillator_bank.h"
-#include "acoustics/synthesis/synthesizer.h"
+#include "acoustics/synthesis/synthesis_stage.h"
 #include "io/audio_file.h"
-#include "io/bubble_track_file.h"
-#include "io/input_error.h"
 #include "io/interruption.h"
 #include "io/output_file.h"
-#include "io/spectrogram_image.h"
-#include "io/text_file.h"
 #include "tools/number_checks.h"
-#include "tools/progress_display.h"
 #include "tools/render_memory.h"
 #include "tools/run_report.h"
 #include "tools/solver_memory.h"
+#include "tools/stage_progress.h"
+#include "tools/synth_files.h"
+#include "tools/synth_report.h"
 
 namespace fluidsound::tools {
 
@@ -43,140 +37,72 @@ CLI::App* addSynthCommand(CLI::App& app, SynthOptions& o) {
 
 namespace {
 
-/// OUT.report.json beside a file output (so out.wav and out.flac keep their own reports); none for
-/// a stream (`-`, a device, a FIFO): a report there would land in /dev or mix with the audio.
-std::string defaultReportPath(const std::string& output) {
-  if (io::resolveOutput(output).kind != io::OutputKind::Replace) return {};
-  return output + ".report.json";
-}
-
-/// The shown name of an output: "standard output" for `-`.
-std::string shownName(const std::string& path) {
-  return io::isStandardOutput(path) ? std::string("standard output") : path;
-}
-
 void note(const SynthOptions& o, const std::string& text) {
   if (!o.common.quiet) std::fprintf(stderr, "fluidsound: note: %s\n", text.c_str());
 }
 
-/// Refuses, before the render, every output that cannot be written or names an input or another
-/// output (the audio format is checked by audioLayout()).
-/// @return the report's path; empty: no report (a stream output without --report)
-std::string checkedReportPath(const SynthOptions& o) {
-  const std::string reportPath = o.report.empty() ? defaultReportPath(o.output) : o.report;
-  requireDistinctFiles({{"bubbles", o.input, true},
-                        {"--output", o.output},
-                        {"--report", reportPath},
-                        {"--spectrogram", o.spectrogram}});
-  io::requireWritableFolder(o.output);
-  if (!reportPath.empty()) io::requireWritableFolder(reportPath);
-  if (!o.spectrogram.empty()) io::requireWritableFolder(o.spectrogram);
-  return reportPath;
-}
-
-/// The settings and results of a render (docs/cli.md lists the fields); stage times are added by
-/// the caller.
-void addSynthResults(RunReport& report, const SynthOptions& o, const acoustics::SynthesisSettings& settings,
-                      const io::AudioWriteSettings& write, const acoustics::BubbleTrackSet& tracks,
-                      const acoustics::SynthesisReport& r, const io::AudioWriteReport& w,
-                     std::size_t channels) {
-  report.setting("input", o.input);
-  report.setting("output", o.output);
-  report.setting("sample_rate", settings.sampleRate);
-  report.setOscillatorModel(settings.model);
-  report.result("bubbles_in_file", static_cast<double>(tracks.bubbles.size()));
-  report.result("bubbles_rendered", static_cast<double>(r.bubblesRendered));
-  report.result("bubbles_above_nyquist", static_cast<double>(r.bubblesAboveNyquist));
-  report.result("bubbles_after_end", static_cast<double>(r.bubblesSilent));
-  report.result("depths_clamped", static_cast<double>(r.depthsClamped));
-  report.result("oscillator_samples", static_cast<double>(r.oscillatorSamples));
-  report.result("duration_seconds", static_cast<double>(r.frames) / settings.sampleRate);
-  report.result("channels", static_cast<double>(channels));
-  report.result("peak_pascals", r.peakPascals);
-  // The inner loop that ran (acoustics/synthesis/oscillator_kernel.h): a speed figure says what it measured.
-  report.result("oscillator_kernel", std::string(acoustics::oscillatorKernelName(r.kernel)));
-  report.result("gain", w.gain);
-  report.result("output_peak_dbfs", w.outputPeakDbfs);
-  report.result("clipped_samples", static_cast<double>(w.clippedSamples));
-  reportAudioOutput(report, write, w);  // format, bits, normalisation, scale, loudness, channels
+/// acoustics::synthesize with the terminal's progress line; a signal stops it (io::Interrupted).
+acoustics::SynthesisStageResult renderWithProgress(const acoustics::BubbleTrackSet& tracks,
+                                                   const SynthOptions& o) {
+  const acoustics::SynthesisOptions options{o.audio.sampleRate, o.duration, o.model, std::nullopt};
+  requireMemoryForRender(tracks, o.input, acoustics::synthesisSettings(tracks, options), o.duration,
+                         physicalMemoryBytes());
+  StageProgress observer("synth", "s audio", o.common.quiet);
+  try {
+    acoustics::SynthesisStageResult result = acoustics::synthesize(tracks, options, observer);
+    observer.finish();
+    return result;
+  } catch (const StageInterrupted& e) {
+    throw io::Interrupted(io::interruptionSignal(), e.what());
+  }
 }
 
 }  // namespace
 
-int runSynthCommand(const SynthOptions& o) {
+nlohmann::ordered_json renderSynth(const SynthOptions& o, const acoustics::BubbleTrackSet* tracks) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  // Fail before the render, not after it, when an output cannot be written.
-  audioLayout(o.output, o.audio.format, o.audio.bits);  // the name, --format and --bits agree
-  const std::string reportPath = checkedReportPath(o);
-
-  std::error_code sizeError;
-  const auto inputBytes = std::filesystem::file_size(o.input, sizeError);
-  constexpr std::uintmax_t kAnnounceReadBytes = 8u << 20;  // a read that takes about a second
-  if (!sizeError && inputBytes > kAnnounceReadBytes)
-    note(o, "reading " + o.input + " (" + std::to_string(inputBytes >> 20) + " MB)");
-  const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(o.input);
-  if (tracks.channelCount() > static_cast<std::size_t>(acoustics::kMaxListeners))
-    throw io::InputError(o.input, "listeners", "at most " + std::to_string(acoustics::kMaxListeners) +
-                         " listeners", std::to_string(tracks.listeners.size()));
+  const std::string reportPath = checkedSynthOutputs(o);  // fail before the render, not after it
+  std::optional<acoustics::BubbleTrackSet> read;
+  if (!tracks) tracks = &read.emplace(readSynthInput(o));
   const auto t1 = Clock::now();
-
-  acoustics::SynthesisSettings settings;
-  settings.sampleRate = o.audio.sampleRate.value_or(tracks.sampleRate);
-  settings.duration = o.duration ? o.duration : tracks.duration;
-  settings.model = o.model;
-  requireMemoryForRender(tracks, o.input, settings, o.duration, physicalMemoryBytes());
-  acoustics::SynthesisResult result;
-  {
-    const double audioSeconds = settings.duration.value_or(0.0);
-    ProgressDisplay progress("synth", audioSeconds > 0 ? audioSeconds : 1.0,
-                             audioSeconds > 0 ? "s audio" : "", o.common.quiet);
-    result = acoustics::synthesize(tracks, settings, [&](double f) {
-      io::throwIfInterrupted("synth, " + std::to_string(std::lround(f * 100)) + " % rendered");
-      progress.update(f);
-    });
-  }
+  acoustics::SynthesisStageResult result = renderWithProgress(*tracks, o);
   const auto t2 = Clock::now();
   const acoustics::SynthesisReport& r = result.report;
   if (r.bubblesAboveNyquist > 0)
-    note(o, std::to_string(r.bubblesAboveNyquist) + " bubble(s) dropped: frequency at or above Nyquist (" +
-                std::to_string(settings.sampleRate / 2) + " Hz)");
+    note(o, std::to_string(r.bubblesAboveNyquist) +
+                " bubble(s) dropped: frequency at or above Nyquist (" +
+                std::to_string(result.settings.sampleRate / 2) + " Hz)");
   if (r.depthsClamped > 0)
     note(o, std::to_string(r.depthsClamped) + " track sample(s) shallower than 1.25 R: depth shift clamped");
 
-  io::AudioBuffer audio{settings.sampleRate, std::move(result.channels)};
-  const io::AudioWriteSettings write = audioWriteSettings(o.audio, o.output, tracks.listeners);
-  // All outputs are encoded first, then written together: a failure leaves none of them.
-  io::EncodedAudio encoded = io::encodeAudio(o.output, audio, write);
-  const io::AudioWriteReport w = encoded.report;
+  const std::size_t channels = result.channels.size();
+  const io::AudioBuffer audio{result.settings.sampleRate, std::move(result.channels)};
+  const io::AudioWriteSettings write = audioWriteSettings(o.audio, o.output, tracks->listeners);
   io::OutputBatch outputs;
-  outputs.add(o.output, std::move(encoded.bytes));
-  if (!o.spectrogram.empty()) {
-    const std::string title = io::isStandardOutput(o.output) ? std::string("standard output")
-                                                             : std::filesystem::path(o.output).filename().string();
-    outputs.add(o.spectrogram, io::encodeSpectrogramPng(audio, {}, title));
-  }
-  const auto t3 = Clock::now();
-  if (!reportPath.empty()) {
-    RunReport report("synth");
-    addSynthResults(report, o, settings, write, tracks, r, w, audio.channels.size());
-    const double synthSeconds = std::chrono::duration<double>(t2 - t1).count();
-    report.stageSeconds("read", std::chrono::duration<double>(t1 - t0).count());
-    report.stageSeconds("synthesis", synthSeconds);
-    report.stageSeconds("write", std::chrono::duration<double>(t3 - t2).count());
-    report.result("oscillator_samples_per_second",
-                  synthSeconds > 0 ? static_cast<double>(r.oscillatorSamples) / synthSeconds : 0.0);
-    outputs.add(reportPath, report.text());
-  }
+  const io::AudioWriteReport w = addSynthFiles(outputs, o, audio, write);
+  RunReport report("synth");
+  addSynthResults(report, o, {result, channels, tracks->bubbles.size(), write, w});
+  report.stageSeconds("read", std::chrono::duration<double>(t1 - t0).count());
+  report.stageSeconds("synthesis", result.seconds);
+  report.stageSeconds("write", std::chrono::duration<double>(Clock::now() - t2).count());
+  report.result("oscillator_samples_per_second", result.oscillatorSamplesPerSecond());
+  nlohmann::ordered_json document = report.document();
+  if (!reportPath.empty()) outputs.add(reportPath, jsonFileText(document));
   io::throwIfInterrupted("synth, before writing");
   outputs.commit();
 
   warnAboutAudioOutput(w, o.common.quiet);
   if (!o.common.quiet)
     std::fprintf(stderr, "fluidsound: wrote %s (%zu ch, %.2f s, peak %.3g Pa) in %.2f s\n",
-                 shownName(o.output).c_str(), audio.channels.size(),
-                 static_cast<double>(r.frames) / settings.sampleRate, r.peakPascals,
+                 io::isStandardOutput(o.output) ? "standard output" : o.output.c_str(), channels,
+                 result.durationSeconds(), r.peakPascals,
                  std::chrono::duration<double>(Clock::now() - t0).count());
+  return document;
+}
+
+int runSynthCommand(const SynthOptions& o) {
+  renderSynth(o);
   return kExitSuccess;
 }
 

@@ -2,9 +2,11 @@
 // its spectrogram (optional) and a report.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "acoustics/bubble/bubble_track.h"
 #include "acoustics/bubble/oscillator_model.h"
 #include "tools/audio_options.h"
 #include "tools/command_options.h"
@@ -23,6 +25,15 @@ struct SynthOptions {
 };
 
 CLI::App* addSynthCommand(CLI::App& app, SynthOptions& options);
+
+/// @brief The synth stage: renders `tracks` (`run`'s, in memory after its transfer stage; null:
+///        read from options.input) with acoustics::synthesize and writes the audio, the
+///        spectrogram and the report together.
+/// @return the report's document (also when no report file is written)
+/// @throws io::InputError, io::OutputError, CLI::ValidationError; io::Interrupted after a signal
+///         (nothing written)
+nlohmann::ordered_json renderSynth(const SynthOptions& options,
+                                   const acoustics::BubbleTrackSet* tracks = nullptr);
 
 /// @throws io::InputError, io::OutputError (main turns them into one-line errors)
 int runSynthCommand(const SynthOptions& options);

@@ -1,14 +1,13 @@
 // tools/transfer_command.cpp — see transfer_command.h.
 #include "tools/transfer_command.h"
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
-#include <optional>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "acoustics/transfer/transfer_stage.h"
 #include "io/bubble_track_file.h"
@@ -17,8 +16,9 @@
 #include "io/interruption.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
-#include "tools/progress_display.h"
 #include "tools/run_report.h"
+#include "tools/stage_progress.h"
+#include "tools/transfer_report.h"
 
 namespace fluidsound::tools {
 
@@ -36,22 +36,6 @@ CLI::App* addTransferCommand(CLI::App& app, TransferOptions& o) {
 
 namespace {
 
-/// The transfer stage's progress on the terminal; a signal stops it between chunks of frames.
-class TransferObserver : public StageObserver {
- public:
-  explicit TransferObserver(bool quiet) : quiet_(quiet) {}
-  void started(double frames) override { display_.emplace("transfer", frames, "frames", quiet_); }
-  void progress(double fraction) override { display_->update(fraction); }
-  bool wasInterrupted() override { return io::interruptionRequested(); }
-  void finish() {
-    if (display_) display_->finish();
-  }
-
- private:
-  bool quiet_;
-  std::optional<ProgressDisplay> display_;
-};
-
 /// The scene's listeners, up (against gravity, else +y), frame rate and last frame, and the model.
 acoustics::TransferSetup transferSetup(const sim::Scene& scene,
                                        const acoustics::OscillatorModel& model) {
@@ -66,13 +50,10 @@ acoustics::TransferSetup transferSetup(const sim::Scene& scene,
   return setup;
 }
 
-}  // namespace
-
-int runTransferCommand(const TransferOptions& o) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  const sim::Scene scene = io::readScene(o.scene);
-  const std::filesystem::path out = o.output, tracksPath = out / "bubbles.json";
+/// OUTDIR/bubbles.json as simulate wrote it (transfer values, if any, are recomputed), for the
+/// scene's listeners.
+acoustics::BubbleTrackSet readSimulatedTracks(const std::filesystem::path& tracksPath,
+                                              const sim::Scene& scene) {
   acoustics::BubbleTrackSet tracks = io::readBubbleTracks(tracksPath, io::TransferValues::Optional);
   std::vector<std::string> names;
   for (const sim::Listener& l : scene.listeners) names.push_back(l.name);
@@ -81,15 +62,24 @@ int runTransferCommand(const TransferOptions& o) {
         tracksPath.string(), "listeners",
         "the scene's listeners (" + std::to_string(names.size()) + ")",
         std::to_string(tracks.listeners.size()) + " other names: simulate the scene again");
+  return tracks;
+}
+
+}  // namespace
+
+acoustics::BubbleTrackSet transferInFolder(const TransferOptions& o, const sim::Scene& scene,
+                                           std::optional<acoustics::BubbleTrackSet> tracks) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::filesystem::path out = o.output, tracksPath = out / "bubbles.json";
+  if (!tracks) tracks = readSimulatedTracks(tracksPath, scene);
   io::requireWritableFolder(tracksPath);
   io::requireWritableFolder(out / "transfer.report.json");
 
-  const acoustics::TransferSetup setup = transferSetup(scene, o.model);
-  TransferObserver observer(o.common.quiet);
+  StageProgress observer("transfer", "frames", o.common.quiet);
   acoustics::TransferResult result;
   try {
-    result = acoustics::computeTransfer(std::move(tracks), io::FrameFolderSurfaces(out), setup,
-                                        observer);
+    result = acoustics::computeTransfer(std::move(*tracks), io::FrameFolderSurfaces(out),
+                                        transferSetup(scene, o.model), observer);
   } catch (const acoustics::TransferInputError& e) {
     const bool aboutTracks = e.input() == acoustics::TransferInput::Tracks;
     throw io::InputError(aboutTracks ? tracksPath.string() : scene.file.string(), e.field(),
@@ -101,17 +91,15 @@ int runTransferCommand(const TransferOptions& o) {
   io::writeBubbleTracks(tracksPath, result.tracks);
 
   RunReport report("transfer");
-  report.setting("scene", o.scene);
-  report.setting("output", o.output);
-  report.setting("model", "image source, locally flat surface (docs/transfer.md)");
-  report.setOscillatorModel(o.model);
-  report.result("bubbles", static_cast<double>(result.bubbles));
-  report.result("samples", static_cast<double>(result.samples));
-  report.result("frames_read", static_cast<double>(result.framesRead));
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  report.stageSeconds("transfer", result.seconds);
-  report.result("seconds", seconds);
+  addTransferResults(report, o, result);
+  report.result("seconds",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   report.write(out / "transfer.report.json");
+  return std::move(result.tracks);
+}
+
+int runTransferCommand(const TransferOptions& o) {
+  transferInFolder(o, io::readScene(o.scene), std::nullopt);
   return kExitSuccess;
 }
 

@@ -57,7 +57,7 @@ TEST(ProgressDisplay, LogLinesNeverRunIntoTheProgressLineOnATerminal) {
   std::FILE* stream = std::tmpfile();
   ASSERT_NE(stream, nullptr);
   {
-    ProgressDisplay progress("simulate", 4, "frames", false, stream, true, 0.0);
+    ProgressDisplay progress("simulate", 4, "frames", false, {stream, true, 0.0});
     progress.update(0.25);
     progress.log("frame    1/3  t 0.033 s");
     progress.update(0.5);
@@ -78,7 +78,7 @@ TEST(ProgressDisplay, WritesPlainLinesToALogAndNothingWhenQuiet) {
   std::FILE* stream = std::tmpfile();
   ASSERT_NE(stream, nullptr);
   {
-    ProgressDisplay progress("transfer", 2, "frames", false, stream, false, 0.0);
+    ProgressDisplay progress("transfer", 2, "frames", false, {stream, false, 0.0});
     progress.update(0.5);  // within the log interval after the start: not printed
     progress.log("a log line");
     progress.update(1.0);  // the last one always is
@@ -92,7 +92,7 @@ TEST(ProgressDisplay, WritesPlainLinesToALogAndNothingWhenQuiet) {
   std::FILE* quietStream = std::tmpfile();
   ASSERT_NE(quietStream, nullptr);
   {
-    ProgressDisplay quiet("transfer", 2, "frames", true, quietStream, true, 0.0);
+    ProgressDisplay quiet("transfer", 2, "frames", true, {quietStream, true, 0.0});
     quiet.update(0.5);
     quiet.log("a log line");
   }

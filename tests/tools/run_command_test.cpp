@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/audio_file.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
 #include "support/temp_folder.h"
@@ -63,6 +64,60 @@ TEST(RunCommand, RendersTheSceneAndReusesFreshStages) {
   report = readJson(out / "report.json");
   for (const char* stage : {"simulate", "transfer", "synth"})
     EXPECT_FALSE(report["run"]["stages"][stage]["reused"].get<bool>()) << stage << " after the scene changed";
+}
+
+/// A report without what differs from run to run: timings, memory, the files' paths.
+nlohmann::json withoutTimings(nlohmann::json report) {
+  report.erase("peak_memory_bytes");
+  report.erase("stages");
+  report["settings"].erase("input");
+  report["settings"].erase("output");
+  report["results"].erase("seconds");
+  report["results"].erase("oscillator_samples_per_second");
+  if (report["results"].contains("frames"))
+    for (auto& frame : report["results"]["frames"]) frame.erase("seconds");
+  return report;
+}
+
+// Claim (issue 18): `run` hands the bubble tracks from stage to stage in memory, and the bits are
+// those of the three commands run one after the other through the files: the same bubbles.json,
+// samples and reports (but for timings and paths), report.json being simulate's plus `run`.
+// Reference: `simulate`, `transfer`, `synth` into another folder.
+TEST(RunCommand, GivesTheBitsOfTheSingleStageCommands) {
+  const TempFolder folder;
+  const fs::path scene = folder.path() / "fall.scene.json", staged = folder.path() / "staged",
+                 run = folder.path() / "run";
+  // The column's first 0.25 s (a few bubbles): four commands stay within a test's time.
+  {
+    std::ofstream(scene) << std::string(kScene).replace(std::string(kScene).find("0.4,"), 4,
+                                                        "0.25,");
+  }
+  for (const std::initializer_list<std::string> command :
+       {std::initializer_list<std::string>{"simulate", scene.string(), "-o", staged.string(),
+                                           "--quiet"},
+        {"transfer", scene.string(), "-o", staged.string(), "--quiet"},
+        {"synth", (staged / "bubbles.json").string(), "-o", (staged / "fall.wav").string(),
+         "--report", (staged / "synth.report.json").string(), "--quiet"},
+        {"run", scene.string(), "-o", run.string(), "--quiet"}}) {
+    const CommandOutcome outcome = runFluidsound(command);
+    ASSERT_EQ(outcome.exitCode, 0) << *command.begin() << ": " << outcome.err;
+  }
+  const auto bytes = [](const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(run / "bubbles.json"), bytes(staged / "bubbles.json"));
+  const io::AudioBuffer expected = io::readAudio(staged / "fall.wav");
+  ASSERT_GT(expected.frameCount(), 0u);
+  EXPECT_TRUE(io::readAudio(run / "fall.wav").channels == expected.channels);
+  for (const char* report : {"transfer.report.json", "synth.report.json"})
+    EXPECT_EQ(withoutTimings(readJson(run / report)), withoutTimings(readJson(staged / report)))
+        << report;
+  nlohmann::json runReport = readJson(run / "report.json");
+  EXPECT_EQ(runReport["run"]["peak_pascals"],
+            readJson(staged / "synth.report.json")["results"]["peak_pascals"]);
+  runReport.erase("run");
+  EXPECT_EQ(withoutTimings(runReport), withoutTimings(readJson(staged / "report.json")));
 }
 
 // Bad input stops `run` before any output: a typo in the scene names its JSON path, exit 3.
