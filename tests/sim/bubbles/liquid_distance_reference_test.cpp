@@ -14,9 +14,12 @@
 #include <vector>
 
 #include "sim/bubbles/liquid_distance.h"
+#include "support/solver_like_field.h"
 
 namespace fluidsound::sim {
 namespace {
+
+using test::solverLikeField;
 
 constexpr double kCell = 0.005;  // h [m]
 
@@ -26,17 +29,6 @@ GridGeometry box(int ni, int nj, int nk, const Vec3& origin = {0.0, 0.0, 0.0}) {
   g.cellSize = kCell;
   g.origin = origin;
   return g;
-}
-
-/// φ at the centres from a signed distance, clamped as the solver's is to [−0.4 h, 1.5 h].
-Array3f clampedField(const GridGeometry& g, const std::function<double(const Vec3&)>& distance) {
-  Array3f phi(g.cells);
-  for (int k = 0; k < g.cells[2]; ++k)
-    for (int j = 0; j < g.cells[1]; ++j)
-      for (int i = 0; i < g.cells[0]; ++i)
-        phi(i, j, k) = static_cast<float>(
-            std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
-  return phi;
 }
 
 Array3f openNodes(const GridGeometry& g) { return Array3f(g.nodeCount(), 1.0f); }
@@ -74,7 +66,7 @@ TEST(LiquidDistanceReference, SphereGivesTheSameBits) {
   // Claim: for a drop of liquid (curved: the nearest point of a cell is seldom its neighbour's),
   // with the bubble model's bands (4.75 h, 2.75 h above), fast and reference agree bit for bit.
   const GridGeometry g = box(24, 24, 24);
-  const Array3f phi = clampedField(g, [](const Vec3& x) {
+  const Array3f phi = solverLikeField(g, [](const Vec3& x) {
     return std::hypot(x[0] - 0.061, x[1] - 0.058, x[2] - 0.0605) - 7.3 * kCell;
   });
   EXPECT_GT(expectSameBits(phi, openNodes(g), g, 4.75 * kCell, 2.75 * kCell), 3000);
@@ -84,7 +76,7 @@ TEST(LiquidDistanceReference, SlabGivesTheSameBits) {
   // Claim: a tilted slab of liquid (a floor and a surface, each cut by the grid's edges) on a
   // grid that is not a cube, off the origin, with one band for both sides: the same bits.
   const GridGeometry g = box(30, 20, 14, {0.01, -0.02, 0.003});
-  const Array3f phi = clampedField(g, [](const Vec3& x) {
+  const Array3f phi = solverLikeField(g, [](const Vec3& x) {
     const double above = 0.2 * x[0] + 0.95 * x[1] + 0.1 * x[2] - 0.05, below = -x[1];
     return std::max(above, below);
   });
@@ -124,7 +116,7 @@ TEST(LiquidDistanceReference, GridWithASolidGivesTheSameBits) {
   // Claim: a block of solid across the surface (its cells make no surface; distances pass
   // through them; they count as liquid in the sign) and the grid's walls: the same bits.
   const GridGeometry g = box(24, 24, 20);
-  const Array3f phi = clampedField(g, [](const Vec3& x) { return 0.4 * x[0] + x[1] - 0.07; });
+  const Array3f phi = solverLikeField(g, [](const Vec3& x) { return 0.4 * x[0] + x[1] - 0.07; });
   Array3f nodes(g.nodeCount());
   for (int k = 0; k <= g.cells[2]; ++k)
     for (int j = 0; j <= g.cells[1]; ++j)
