@@ -92,20 +92,25 @@ VoiceSet prepareVoices(const BubbleTrackSet& tracks, const SynthesisSettings& se
   const double fs = settings.sampleRate;
   const double nyquistAngular = std::numbers::pi * fs;
   // Every bubble prepared in its slot of the render order, in parallel.
-  const std::vector<std::pair<std::int64_t, std::size_t>> order = renderOrder(tracks, fs);
+  VoiceSet set;
+  VoiceSet::Preparation& work = set.preparation;
+  work.order = renderOrder(tracks, fs);
+  const std::vector<std::pair<std::int64_t, std::size_t>>& order = work.order;
   const std::size_t count = order.size();
   // All track tables in one array, in render order.
-  std::vector<std::size_t> trackOffset(count + 1, 0);
+  std::vector<std::size_t>& trackOffset = work.trackOffset;
+  trackOffset.assign(count + 1, 0);
   for (std::size_t k = 0; k < count; ++k)
     trackOffset[k + 1] =
         trackOffset[k] + TrackInterpolator::storageSize(tracks.bubbles[order[k].second], channels);
-  VoiceSet set;
   // Left uninitialised (every entry is written by its voice, in parallel): tens of MB for 10⁵
   // bubbles.
   set.trackStorage.reset(new double[trackOffset[count]]);
   set.voices.resize(count);
-  std::vector<char> aliased(count);
-  std::vector<std::int64_t> clamped(count);
+  std::vector<char>& aliased = work.aliased;
+  std::vector<std::int64_t>& clamped = work.clamped;
+  aliased.assign(count, 0);
+  clamped.assign(count, 0);
   double* const storage = set.trackStorage.get();
   tbb::parallel_for(std::size_t{0}, count, [&](std::size_t k) {
     const BubbleTrack& bubble = tracks.bubbles[order[k].second];

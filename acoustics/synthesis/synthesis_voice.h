@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "acoustics/bubble/bubble_track.h"
@@ -55,6 +56,16 @@ struct VoiceSet {
   std::vector<Voice> voices;  ///< by first sample (ties in file order); none aliased or silent
   std::int64_t frames = 0;    ///< samples per channel
   std::int64_t maxLifetimeBlocks = 0;  ///< the most blocks from a voice's first to its end
+  /// prepareVoices' work arrays, per bubble in render order. Kept with the voices until the
+  /// render ends, as when they were locals of synthesize: freed between preparing and rendering
+  /// (each ≥ 64 kB for 10⁴ bubbles), they let the allocator hand memory back to the system and
+  /// fault it in again during the render (BM_Synthesize/10000: 25 % more CPU time).
+  struct Preparation {
+    std::vector<std::pair<std::int64_t, std::size_t>> order;  ///< (first sample, bubble index)
+    std::vector<std::size_t> trackOffset;  ///< each voice's track tables in trackStorage
+    std::vector<char> aliased;             ///< peak frequency ≥ Nyquist
+    std::vector<std::int64_t> clamped;     ///< track samples shallower than 1.25 R
+  } preparation;
 };
 
 /// @brief Every bubble of `tracks` as a voice, in render order, without those whose peak
