@@ -204,13 +204,13 @@ namespace {
 struct StepContext {
   const LiquidState& liquid;
   const BubbleSettings& settings;
-  double time;        ///< the end of the step [s]
-  double band;        ///< bandCells·h [m]
-  double growth;      ///< entrainmentDepthCells·h [m]
-  double probe;       ///< probeCells·h [m]
-  bool speedTest;     ///< entrainmentSpeed is finite
+  double time;                 ///< the end of the step [s]
+  double band;                 ///< bandCells·h [m]
+  double growth;               ///< entrainmentDepthCells·h [m]
+  double probe;                ///< probeCells·h [m]
+  bool speedTest;              ///< entrainmentSpeed is finite
   const VelocityRange* range;  ///< nullptr: no speed test is skipped
-  double boundBelow;  ///< a speed bound below this cannot pass the test [m/s]
+  double boundBelow;           ///< a speed bound below this cannot pass the test [m/s]
   /// Per stencil base cell, whether φ there is beyond ±band (empty: not built).
   const std::vector<std::uint8_t>& beyondBand;
 };
@@ -241,9 +241,9 @@ void testParticle(const StepContext& c, std::size_t p, const EntrainmentTag* old
     if (!entrains && inBand && c.speedTest) {
       const Vec3f& vf = liquid.particleVelocities[p];
       const Vec3 v{vf[0], vf[1], vf[2]};
-      entrains = !(c.range && c.range->maxDifference(x, v) < c.boundBelow) &&
-                 relativeSpeedIntoLiquid(liquid, phiAround, x, v, c.probe) >=
-                     settings.entrainmentSpeed;
+      entrains =
+          !(c.range && c.range->maxDifference(x, v) < c.boundBelow) &&
+          relativeSpeedIntoLiquid(liquid, phiAround, x, v, c.probe) >= settings.entrainmentSpeed;
     }
     if (entrains) {
       tag.seedBirth = time;

@@ -45,9 +45,10 @@ struct SpawnResult {
 
 /// The step (t, t + dt] whose attempts spawnBubbles draws.
 struct SpawnStep {
-  double t = 0.0;            ///< its start [s]
-  double dt = 0.0;           ///< its length [s]
-  std::uint64_t stream = 0;  ///< its stream key (the caller derives it from the scene seed and step)
+  double t = 0.0;   ///< its start [s]
+  double dt = 0.0;  ///< its length [s]
+  /// Its stream key (the caller derives it from the scene seed and step).
+  std::uint64_t stream = 0;
 };
 
 /// @brief Draws and tests the creation attempts of the step (t, t + dt].
