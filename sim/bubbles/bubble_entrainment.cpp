@@ -198,79 +198,91 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   return detectEntrainment(liquid, previous, settings, time, range ? &*range : nullptr);
 }
 
-EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
-                                  const BubbleSettings& settings, double time,
-                                  const VelocityRange* range) {
-  validateLiquidState(liquid);
-  const double h = liquid.grid.cellSize;
-  const double band = settings.bandCells * h;
-  const double growth = settings.entrainmentDepthCells * h;
-  const double probe = settings.probeCells * h;
-  const bool speedTest = std::isfinite(settings.entrainmentSpeed);
-  if (!entrainmentUsesVelocityRange(settings)) range = nullptr;  // a probe beyond its reach
-  const double boundBelow = settings.entrainmentSpeed * (1.0 - kSpeedBoundMargin);
-  const std::size_t n = liquid.particlePositions.size();
-  const std::vector<std::uint8_t> beyondBand =
-      n * kCellsPerParticleForTable >= liquid.liquidDistance.values().size()
-          ? beyondBandStencils(liquid.liquidDistance, band)
-          : std::vector<std::uint8_t>{};
-  std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
-  forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
-    BlockResult& out = blocks[b];
-    out.tags.reserve(end - begin);  // at most one record per particle: one allocation
-    // Each record is looked up kPrefetchAhead particles early and fetched into the cache then;
-    // the ring holds what was found until its particle comes.
-    std::array<const EntrainmentTag*, kPrefetchAhead> found{};
-    const auto lookAhead = [&](std::size_t q) {
-      const EntrainmentTag* record = previous.find(liquid.particleIds[q]);
-      if (record) __builtin_prefetch(record);
-      found[q % kPrefetchAhead] = record;
-    };
-    for (std::size_t q = begin; q < std::min(end, begin + kPrefetchAhead); ++q) lookAhead(q);
-    for (std::size_t p = begin; p < end; ++p) {
-      const EntrainmentTag* old = found[p % kPrefetchAhead];
-      if (p + kPrefetchAhead < end) lookAhead(p + kPrefetchAhead);  // takes old's slot
-      const Vec3f& xf = liquid.particlePositions[p];
-      const Vec3 x{xf[0], xf[1], xf[2]};
-      // Deep or far, and no record: nothing to do (most particles), decided without the
-      // interpolation.
-      if (!old && !beyondBand.empty() && beyondBand[stencilBase(liquid.grid, x)]) continue;
-      // One set of loads for φ and, if the speed is tested, its gradient.
-      const CellCentreStencil phiAround(liquid.liquidDistance, liquid.grid, x);
-      const double phi = phiAround.value();
-      const bool inBand = std::abs(phi) <= band;
-      if (!old && !inBand) continue;
-      out.tagged += inBand;
-      EntrainmentTag tag = old ? *old : EntrainmentTag{liquid.particleIds[p]};
-      const double depth = -phi;
-      if (!(time - tag.seedBirth < settings.seedLifetime)) {
-        const bool windowOpen = time - tag.windowStart <= settings.entrainmentWindow;
-        bool entrains = windowOpen && depth - tag.windowDepth >= growth;
-        if (!entrains && inBand && speedTest) {
-          const Vec3f& vf = liquid.particleVelocities[p];
-          const Vec3 v{vf[0], vf[1], vf[2]};
-          entrains =
-              !(range && range->maxDifference(x, v) < boundBelow) &&
-              relativeSpeedIntoLiquid(liquid, phiAround, x, v, probe) >= settings.entrainmentSpeed;
-        }
-        if (entrains) {
-          tag.seedBirth = time;
-          tag.windowStart = kNever;
-          ++out.newSeeds;
-        } else if (!windowOpen) {
-          tag.windowStart = inBand ? time : kNever;
-          tag.windowDepth = inBand ? depth : 0.0;
-        }
-      }
-      const bool seedAlive = time - tag.seedBirth < settings.seedLifetime;
-      if (seedAlive)
-        out.seeds.push_back({tag.particleId, x, tag.seedBirth,
-                             std::exp(-(time - tag.seedBirth) / settings.potentialDecayTime)});
-      if (seedAlive || time - tag.windowStart <= settings.entrainmentWindow)
-        out.tags.push_back(tag);
+namespace {
+
+/// What every particle's test of one step reads.
+struct StepContext {
+  const LiquidState& liquid;
+  const BubbleSettings& settings;
+  double time;                 ///< the end of the step [s]
+  double band;                 ///< bandCells·h [m]
+  double growth;               ///< entrainmentDepthCells·h [m]
+  double probe;                ///< probeCells·h [m]
+  bool speedTest;              ///< entrainmentSpeed is finite
+  const VelocityRange* range;  ///< nullptr: no speed test is skipped
+  double boundBelow;           ///< a speed bound below this cannot pass the test [m/s]
+  /// Per stencil base cell, whether φ there is beyond ±band (empty: not built).
+  const std::vector<std::uint8_t>& beyondBand;
+};
+
+/// Particle p, with its record from the previous step (or nullptr): its tag, test and seed, added
+/// to `out` (detectEntrainment's rules, bubble_entrainment.h).
+void testParticle(const StepContext& c, std::size_t p, const EntrainmentTag* old,
+                  BlockResult& out) {
+  const LiquidState& liquid = c.liquid;
+  const BubbleSettings& settings = c.settings;
+  const double time = c.time;
+  const Vec3f& xf = liquid.particlePositions[p];
+  const Vec3 x{xf[0], xf[1], xf[2]};
+  // Deep or far, and no record: nothing to do (most particles), decided without the
+  // interpolation.
+  if (!old && !c.beyondBand.empty() && c.beyondBand[stencilBase(liquid.grid, x)]) return;
+  // One set of loads for φ and, if the speed is tested, its gradient.
+  const CellCentreStencil phiAround(liquid.liquidDistance, liquid.grid, x);
+  const double phi = phiAround.value();
+  const bool inBand = std::abs(phi) <= c.band;
+  if (!old && !inBand) return;
+  out.tagged += inBand;
+  EntrainmentTag tag = old ? *old : EntrainmentTag{liquid.particleIds[p]};
+  const double depth = -phi;
+  if (!(time - tag.seedBirth < settings.seedLifetime)) {
+    const bool windowOpen = time - tag.windowStart <= settings.entrainmentWindow;
+    bool entrains = windowOpen && depth - tag.windowDepth >= c.growth;
+    if (!entrains && inBand && c.speedTest) {
+      const Vec3f& vf = liquid.particleVelocities[p];
+      const Vec3 v{vf[0], vf[1], vf[2]};
+      entrains =
+          !(c.range && c.range->maxDifference(x, v) < c.boundBelow) &&
+          relativeSpeedIntoLiquid(liquid, phiAround, x, v, c.probe) >= settings.entrainmentSpeed;
     }
-  });
-  // Merge in block order; the sorts by id make the result independent of the particles' order.
+    if (entrains) {
+      tag.seedBirth = time;
+      tag.windowStart = kNever;
+      ++out.newSeeds;
+    } else if (!windowOpen) {
+      tag.windowStart = inBand ? time : kNever;
+      tag.windowDepth = inBand ? depth : 0.0;
+    }
+  }
+  const bool seedAlive = time - tag.seedBirth < settings.seedLifetime;
+  if (seedAlive)
+    out.seeds.push_back({tag.particleId, x, tag.seedBirth,
+                         std::exp(-(time - tag.seedBirth) / settings.potentialDecayTime)});
+  if (seedAlive || time - tag.windowStart <= settings.entrainmentWindow) out.tags.push_back(tag);
+}
+
+/// Particles [begin, end), each record looked up kPrefetchAhead particles early and fetched into
+/// the cache then; the ring holds what was found until its particle comes.
+void testBlock(const StepContext& c, const EntrainmentTagTable& previous, std::size_t begin,
+               std::size_t end, BlockResult& out) {
+  out.tags.reserve(end - begin);  // at most one record per particle: one allocation
+  std::array<const EntrainmentTag*, kPrefetchAhead> found{};
+  const auto lookAhead = [&](std::size_t q) {
+    const EntrainmentTag* record = previous.find(c.liquid.particleIds[q]);
+    if (record) __builtin_prefetch(record);
+    found[q % kPrefetchAhead] = record;
+  };
+  for (std::size_t q = begin; q < std::min(end, begin + kPrefetchAhead); ++q) lookAhead(q);
+  for (std::size_t p = begin; p < end; ++p) {
+    const EntrainmentTag* old = found[p % kPrefetchAhead];
+    if (p + kPrefetchAhead < end) lookAhead(p + kPrefetchAhead);  // takes old's slot
+    testParticle(c, p, old, out);
+  }
+}
+
+/// The blocks' records and seeds in block order; the sorts by id make the result independent of
+/// the particles' order.
+EntrainmentStep mergeBlocks(std::vector<BlockResult>& blocks) {
   EntrainmentStep result;
   std::vector<EntrainmentTag> tags;
   std::size_t records = 0, seeds = 0;
@@ -287,6 +299,37 @@ EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTa
   std::sort(result.seeds.begin(), result.seeds.end(),
             [](const BubbleSeed& a, const BubbleSeed& b) { return a.particleId < b.particleId; });
   return result;
+}
+
+}  // namespace
+
+EntrainmentStep detectEntrainment(const LiquidState& liquid, const EntrainmentTagTable& previous,
+                                  const BubbleSettings& settings, double time,
+                                  const VelocityRange* range) {
+  validateLiquidState(liquid);
+  const double h = liquid.grid.cellSize;
+  const double band = settings.bandCells * h;
+  if (!entrainmentUsesVelocityRange(settings)) range = nullptr;  // a probe beyond its reach
+  const std::size_t n = liquid.particlePositions.size();
+  const std::vector<std::uint8_t> beyondBand =
+      n * kCellsPerParticleForTable >= liquid.liquidDistance.values().size()
+          ? beyondBandStencils(liquid.liquidDistance, band)
+          : std::vector<std::uint8_t>{};
+  const StepContext context{liquid,
+                            settings,
+                            time,
+                            band,
+                            settings.entrainmentDepthCells * h,
+                            settings.probeCells * h,
+                            std::isfinite(settings.entrainmentSpeed),
+                            range,
+                            settings.entrainmentSpeed * (1.0 - kSpeedBoundMargin),
+                            beyondBand};
+  std::vector<BlockResult> blocks((n + kBlockParticles - 1) / kBlockParticles);
+  forEachBlock(n, kBlockParticles, [&](std::size_t b, std::size_t begin, std::size_t end) {
+    testBlock(context, previous, begin, end, blocks[b]);
+  });
+  return mergeBlocks(blocks);
 }
 
 }  // namespace fluidsound::sim

@@ -243,8 +243,8 @@ BubbleStepReport BubbleModel::step(const LiquidState& solverState, double t, dou
   report.newSeeds = entrainment.newSeeds;
   report.seeds = entrainment.seeds.size();
   // (3) New bubbles, from this step's own random stream.
-  const SpawnResult spawned = spawnBubbles(entrainment.seeds, liquid, sizes_, settings_, t, dt,
-                                           cellStream(streamRoot_, steps_));
+  const SpawnResult spawned = spawnBubbles(entrainment.seeds, liquid, sizes_, settings_,
+                                           {t, dt, cellStream(streamRoot_, steps_)});
   for (const SpawnedBubble& b : spawned.bubbles)
     addBubble(b.radius, b.birth, b.position, b.depth, liquid);
   report.spawn = spawned.counts;

@@ -96,8 +96,11 @@ SpawnCounts& SpawnCounts::operator+=(const SpawnCounts& o) {
   return *this;
 }
 
-SpawnResult spawnBubbles(std::span<const BubbleSeed> seeds, const LiquidState& liquid, const BubbleSizeSampler& sizes,
-                         const BubbleSettings& settings, double t, double dt, std::uint64_t stream) {
+SpawnResult spawnBubbles(std::span<const BubbleSeed> seeds, const LiquidState& liquid,
+                         const BubbleSizeSampler& sizes, const BubbleSettings& settings,
+                         const SpawnStep& step) {
+  const double t = step.t, dt = step.dt;
+  const std::uint64_t stream = step.stream;
   SpawnResult result;
   SpawnCounts& counts = result.counts;
   std::vector<double> cumulative(seeds.size());

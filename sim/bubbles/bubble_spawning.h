@@ -43,6 +43,14 @@ struct SpawnResult {
   SpawnCounts counts;
 };
 
+/// The step (t, t + dt] whose attempts spawnBubbles draws.
+struct SpawnStep {
+  double t = 0.0;   ///< its start [s]
+  double dt = 0.0;  ///< its length [s]
+  /// Its stream key (the caller derives it from the scene seed and step).
+  std::uint64_t stream = 0;
+};
+
 /// @brief Draws and tests the creation attempts of the step (t, t + dt].
 ///        Attempt count: Poisson(rate · Σ potential · dt), Σ taken in seed order. Attempt a draws,
 ///        from its own stream cellStream(stream, a + 1): the radius (inverse CDF of `sizes`), a
@@ -52,9 +60,9 @@ struct SpawnResult {
 ///        < radius, where the depth −φ (trilinear from the centres) is ≤ radius, or where fewer
 ///        than minSeeds seeds lie within ρ(r) = max(neighbourhoodCells·h, neighbourhoodRadii·r).
 /// @param seeds   live seeds, in a fixed order (detectEntrainment's: by particle id)
-/// @param stream  this step's stream key (the caller derives it from the scene seed and step)
 /// @note Rejected attempts are not retried: the created rate is rate × Σ potential × acceptance.
-SpawnResult spawnBubbles(std::span<const BubbleSeed> seeds, const LiquidState& liquid, const BubbleSizeSampler& sizes,
-                         const BubbleSettings& settings, double t, double dt, std::uint64_t stream);
+SpawnResult spawnBubbles(std::span<const BubbleSeed> seeds, const LiquidState& liquid,
+                         const BubbleSizeSampler& sizes, const BubbleSettings& settings,
+                         const SpawnStep& step);
 
 }  // namespace fluidsound::sim

@@ -81,6 +81,35 @@ class SurfaceDistance {
     Reach reach;
   };
 
+  /// A row's work buffers while finding surface cells: the crossing test per cell, and the row's
+  /// phases with a solid cell either side.
+  struct RowScratch {
+    std::vector<std::uint8_t> crossing, padded;
+  };
+
+  // rebuild's steps, in order (each reads what the ones before wrote).
+  /// solidCells_ from the nodal solid distances, when they changed.
+  void findSolidCells(const Array3f& solidNodeDistance);
+  /// phase_ and rowPhases_ from φ and the solid cells; the field at ±band of each cell's side.
+  void classifyCells(const Array3f& phi);
+  /// surface_: every cell next to the surface with its point, in cell order.
+  void findSurfaceCells(const Array3f& phi);
+  /// The field within the band: the nearest surface point's distance, signed by the phase.
+  void fillBand();
+  /// points_ and bucketStart_ from surface_, for at().
+  void groupPointsByBucket();
+
+  // Their parts.
+  int planesPerTask() const;
+  Reach reachOf(const Vec3& p) const;
+  void findSurfaceCellsOfRow(const Array3f& phi, int j, int k, RowScratch& scratch);
+  SurfaceCell surfaceCellAt(const Array3f& phi, int i, int j, int k) const;
+  /// Lowers nearest2_ in z-planes [kBegin, kEnd) by the surface cells [first, last).
+  void lowerNearestSquares(int kBegin, int kEnd, std::size_t first, std::size_t last,
+                           std::vector<float>& x2);
+  /// The field of the rows of z-planes [kBegin, kEnd) that a point reached.
+  void writeReachedRows(int kBegin, int kEnd);
+
   GridGeometry grid_;
   double band_ = 0.0, airBand_ = 0.0;
   Array3f field_;

@@ -46,7 +46,7 @@ TEST(BubbleSpawning, AttemptCountIsPoissonWithTheStatedMean) {
   const int n = 4000;
   double sum = 0.0, sum2 = 0.0;
   for (int s = 0; s < n; ++s) {
-    const SpawnResult r = spawnBubbles(seeds, tank.state(), sizes, settings, 0.0, dt, cellStream(kSeed, s));
+    const SpawnResult r = spawnBubbles(seeds, tank.state(), sizes, settings, {0.0, dt, cellStream(kSeed, s)});
     ASSERT_DOUBLE_EQ(r.counts.meanAttempts, mu);
     sum += r.counts.attempts;
     sum2 += static_cast<double>(r.counts.attempts) * r.counts.attempts;
@@ -71,7 +71,7 @@ TEST(BubbleSpawning, PositionsFollowTheSeedsInProportionToTheirPotential) {
   settings.rate = 1e4;
   std::size_t atA = 0, total = 0;
   for (int s = 0; s < 20; ++s) {
-    const SpawnResult r = spawnBubbles(seeds, tank.state(), sizes, settings, 0.0, 0.01, cellStream(kSeed, s));
+    const SpawnResult r = spawnBubbles(seeds, tank.state(), sizes, settings, {0.0, 0.01, cellStream(kSeed, s)});
     for (const SpawnedBubble& bubble : r.bubbles) {
       const double da = std::hypot(bubble.position[0] - a[0], bubble.position[1] - a[1], bubble.position[2] - a[2]);
       const double db = std::hypot(bubble.position[0] - b[0], bubble.position[1] - b[1], bubble.position[2] - b[2]);
@@ -102,7 +102,7 @@ TEST(BubbleSpawning, AcceptedRadiiFollowTheSizeDistribution) {
   settings.rate = 2e3;
   std::vector<double> radii;
   for (int s = 0; s < 5; ++s) {
-    const SpawnResult r = spawnBubbles(seeds, tank.state(), sizes, settings, 0.0, 0.01, cellStream(kSeed, s));
+    const SpawnResult r = spawnBubbles(seeds, tank.state(), sizes, settings, {0.0, 0.01, cellStream(kSeed, s)});
     EXPECT_EQ(r.counts.created, r.counts.attempts);
     for (const SpawnedBubble& b : r.bubbles) radii.push_back(b.radius);
   }
@@ -127,13 +127,13 @@ TEST(BubbleSpawning, AnIsolatedSeedMakesNoBubble) {
   settings.rate = 1e4;
   const BubbleSizeSampler sizes{PowerLawBubbleSizes{}};
   std::vector<BubbleSeed> seeds{{1, {0.06, 0.05, 0.06}, 0.0, 1.0}};
-  const SpawnResult alone = spawnBubbles(seeds, tank.state(), sizes, settings, 0.0, 0.01, kSeed);
+  const SpawnResult alone = spawnBubbles(seeds, tank.state(), sizes, settings, {0.0, 0.01, kSeed});
   ASSERT_GT(alone.counts.attempts, 20u);
   EXPECT_EQ(alone.counts.created, 0u);
   EXPECT_EQ(alone.counts.rejectedSparse, alone.counts.attempts);
   seeds.push_back({2, {0.06 + 0.4 * kCell, 0.05, 0.06}, 0.0, 0.0});  // potential 0: counted, never chosen
   seeds.push_back({3, {0.06, 0.05 - 0.4 * kCell, 0.06}, 0.0, 0.0});
-  const SpawnResult three = spawnBubbles(seeds, tank.state(), sizes, settings, 0.0, 0.01, kSeed);
+  const SpawnResult three = spawnBubbles(seeds, tank.state(), sizes, settings, {0.0, 0.01, kSeed});
   std::cout << "[ measured ] alone: " << alone.counts.created << " of " << alone.counts.attempts
             << "; with two neighbours: " << three.counts.created << " of " << three.counts.attempts << "\n";
   EXPECT_GT(three.counts.created, three.counts.attempts / 4);

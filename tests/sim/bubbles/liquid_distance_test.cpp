@@ -14,8 +14,12 @@
 #include <numbers>
 #include <vector>
 
+#include "support/solver_like_field.h"
+
 namespace fluidsound::sim {
 namespace {
+
+using test::solverLikeField;
 
 constexpr int kCells = 32;
 constexpr double kCell = 0.005;  // h [m]
@@ -25,18 +29,6 @@ GridGeometry cube() {
   g.cells = {kCells, kCells, kCells};
   g.cellSize = kCell;
   return g;
-}
-
-/// A field like the solver's (liquid_surface.h): the exact signed distance clamped to
-/// [−0.4 h, 1.5 h], i.e. a distance only within 0.4 h below and 1.5 h above the surface.
-Array3f indicator(const GridGeometry& g, const std::function<double(const Vec3&)>& distance) {
-  Array3f phi(g.cells);
-  for (int k = 0; k < kCells; ++k)
-    for (int j = 0; j < kCells; ++j)
-      for (int i = 0; i < kCells; ++i)
-        phi(i, j, k) = static_cast<float>(
-            std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
-  return phi;
 }
 
 Array3f openNodes(const GridGeometry& g, float value = 1.0f) {
@@ -71,7 +63,7 @@ TEST(LiquidDistance, FlatSurfaceIsExactEvenFromANearSurfaceField) {
   const GridGeometry g = cube();
   const double s = g.cellCentre(0, 20, 0)[1] + 0.3 * kCell;
   const auto exact = [&](const Vec3& x) { return x[1] - s; };
-  const Array3f d = SurfaceDistance(indicator(g, exact), openNodes(g), g, kWholeGrid).field();
+  const Array3f d = SurfaceDistance(solverLikeField(g, exact), openNodes(g), g, kWholeGrid).field();
   const double worst = worstError(d, g, exact);
   std::cout << "[ measured ] flat: worst error " << worst / kCell << " h\n";
   EXPECT_LT(worst, 1e-6 * kCell * 32);
@@ -100,7 +92,7 @@ TEST(LiquidDistance, TiltedPlaneAndSphereAreAccurateToAFractionOfACell) {
   for (int shape = 0; shape < 2; ++shape) {
     const std::function<double(const Vec3&)> exact =
         shape == 0 ? std::function<double(const Vec3&)>(plane) : sphere;
-    const Array3f d = SurfaceDistance(indicator(g, exact), openNodes(g), g, kWholeGrid).field();
+    const Array3f d = SurfaceDistance(solverLikeField(g, exact), openNodes(g), g, kWholeGrid).field();
     double worst = 0.0, squares = 0.0;
     int count = 0;
     for (int k = 0; k < kCells; ++k)
@@ -129,7 +121,7 @@ TEST(LiquidDistance, SolidsMakeNoSurface) {
   const auto inBlock = [&](const Vec3& x) {
     return x[0] > 0.04 && x[0] < 0.08 && x[1] > 0.02 && x[1] < 0.06 && x[2] > 0.04 && x[2] < 0.08;
   };
-  Array3f phi = indicator(g, [&](const Vec3& x) { return x[1] - s; });
+  Array3f phi = solverLikeField(g, [&](const Vec3& x) { return x[1] - s; });
   for (int k = 0; k < kCells; ++k)
     for (int j = 0; j < kCells; ++j)
       for (int i = 0; i < kCells; ++i)
@@ -169,10 +161,10 @@ TEST(LiquidDistance, BeyondTheBandTheNearestSurfacePointGivesTheDepth) {
   const double band = 4 * kCell;
   const double s = g.cellCentre(0, 24, 0)[1] + 0.3 * kCell;
   const auto flat = [&](const Vec3& x) { return x[1] - s; };
-  const SurfaceDistance flatDistance(indicator(g, flat), openNodes(g), g, band);
+  const SurfaceDistance flatDistance(solverLikeField(g, flat), openNodes(g), g, band);
   EXPECT_FLOAT_EQ(flatDistance.field()(10, 2, 10), static_cast<float>(-band));
   const auto sphere = liquidSphere({0.08, 0.08, 0.08}, 10 * kCell);
-  const SurfaceDistance sphereDistance(indicator(g, sphere), openNodes(g), g, band);
+  const SurfaceDistance sphereDistance(solverLikeField(g, sphere), openNodes(g), g, band);
   double worstFlat = 0.0, worstSphere = 0.0;
   for (int n = 0; n < 2000; ++n) {  // a fixed quasi-random set of positions (golden-ratio steps)
     const Vec3 x{0.16 * std::fmod(0.5 + n * 0.6180339887, 1.0),
@@ -196,10 +188,10 @@ TEST(LiquidDistance, ANarrowerAirBandClampsOnlyTheAirSide) {
   // reach cells along oblique paths). Tolerance: exact (the same nearest points, cut further out).
   const GridGeometry g = cube();
   const auto sphere = liquidSphere({0.08, 0.08, 0.08}, 10 * kCell);
-  const Array3f phi = indicator(g, sphere);
+  const Array3f phi = solverLikeField(g, sphere);
   const double band = 6 * kCell, airBand = 3 * kCell;
   const Array3f both = SurfaceDistance(phi, openNodes(g), g, band).field();
-  SurfaceDistance narrow(indicator(g, [](const Vec3&) { return 1.0; }), openNodes(g), g, band);
+  SurfaceDistance narrow(solverLikeField(g, [](const Vec3&) { return 1.0; }), openNodes(g), g, band);
   narrow.rebuild(phi, openNodes(g), g, band, airBand);
   int compared = 0;
   for (std::size_t at = 0; at < both.elementCount(); ++at) {
@@ -221,7 +213,7 @@ TEST(LiquidDistance, BandCellsHoldTheDistanceToTheNearestSurfacePoint) {
   // and of the stored value (6e-8 relative), at most 4.75 h: ≤ 7e-7 h.
   const GridGeometry g = cube();
   const auto sphere = liquidSphere({0.081, 0.078, 0.0805}, 9.3 * kCell);
-  const Array3f phi = indicator(g, sphere);
+  const Array3f phi = solverLikeField(g, sphere);
   const double band = 4.75 * kCell, airBand = 2.75 * kCell;
   const SurfaceDistance distance(phi, openNodes(g), g, band, airBand);
   const std::vector<Vec3>& points = distance.surfacePoints();
@@ -299,15 +291,6 @@ TEST(LiquidDistance, RebuildingOneObjectGivesWhatAFreshOneGives) {
         }
     return nodes;
   };
-  const auto field = [](const GridGeometry& g, const std::function<double(const Vec3&)>& distance) {
-    Array3f phi(g.cells);
-    for (int k = 0; k < g.cells[2]; ++k)
-      for (int j = 0; j < g.cells[1]; ++j)
-        for (int i = 0; i < g.cells[0]; ++i)
-          phi(i, j, k) = static_cast<float>(
-              std::clamp(distance(g.cellCentre(i, j, k)), -0.4 * kCell, 1.5 * kCell));
-    return phi;
-  };
   const GridGeometry a = cube();
   GridGeometry b;
   b.cells = {20, 28, 12};
@@ -323,11 +306,11 @@ TEST(LiquidDistance, RebuildingOneObjectGivesWhatAFreshOneGives) {
     double band, airBand;
   };
   const std::vector<Input> inputs = {
-      {&a, field(a, sphere), openNodes(a), 6 * kCell, 4 * kCell},
-      {&a, field(a, sphere), blockNodes(a, 0.05), 6 * kCell, 4 * kCell},
-      {&a, field(a, tilted), blockNodes(a, 0.08), 6 * kCell, 4 * kCell},
-      {&b, field(b, tilted), openNodes(b), 5 * kCell, 0.0},
-      {&a, field(a, sphere), blockNodes(a, 0.05), 9 * kCell, 2 * kCell},
+      {&a, solverLikeField(a, sphere), openNodes(a), 6 * kCell, 4 * kCell},
+      {&a, solverLikeField(a, sphere), blockNodes(a, 0.05), 6 * kCell, 4 * kCell},
+      {&a, solverLikeField(a, tilted), blockNodes(a, 0.08), 6 * kCell, 4 * kCell},
+      {&b, solverLikeField(b, tilted), openNodes(b), 5 * kCell, 0.0},
+      {&a, solverLikeField(a, sphere), blockNodes(a, 0.05), 9 * kCell, 2 * kCell},
   };
   SurfaceDistance reused;
   for (std::size_t n = 0; n < inputs.size(); ++n) {
