@@ -46,7 +46,7 @@ double offDiagonalProduct(const SevenPointMatrix& M, std::size_t n, std::span<co
 /// 7-point neighbours of a colour all have the other colour, so the updates are independent.
 void relaxColour(const SevenPointMatrix& M, std::span<const std::int32_t> colour,
                  std::span<const double> b, std::span<double> x) {
-  forEachBlock(colour.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
+  forEachBlock(colour.size(), kUnknownBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c) {
       const std::size_t n = static_cast<std::size_t>(colour[c]);
       x[n] = (b[n] - offDiagonalProduct(M, n, x)) / M.diagonal[n];
@@ -247,6 +247,13 @@ double MultigridPreconditioner::fineSweepsPerApply() const {
   return work + 2.0 * kMultigridBoundarySweeps * band / double(fine.cellOfUnknown.size());
 }
 
+PcgPreconditioner MultigridPreconditioner::forSolve(const SevenPointMatrix& fineMatrix) {
+  return {[this, &fineMatrix](std::span<const double> r, std::span<double> z) {
+            apply(fineMatrix, r, z);
+          },
+          fineSweepsPerApply()};
+}
+
 void MultigridPreconditioner::apply(const SevenPointMatrix& fineMatrix, std::span<const double> r,
                                     std::span<double> z) {
   std::fill(z.begin(), z.end(), 0.0);
@@ -281,7 +288,7 @@ void MultigridPreconditioner::vCycle(std::size_t l, const SevenPointMatrix& A,
     relaxColour(M, level.boundaryColour[1], b, x);
   }
   std::vector<double>& residual = level.residual;
-  forEachBlock(M.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
+  forEachBlock(M.size(), kUnknownBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n)
       residual[n] = b[n] - M.diagonal[n] * x[n] - offDiagonalProduct(M, n, x);
   });
@@ -291,29 +298,31 @@ void MultigridPreconditioner::vCycle(std::size_t l, const SevenPointMatrix& A,
   constexpr double kRestrictionScale = 1.0 / 8.0;
   constexpr std::array<double, 4> kGatherWeights{kFarParentWeight, kNearParentWeight,
                                                  kNearParentWeight, kFarParentWeight};
-  forEachBlock(coarse.cellOfUnknown.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
-    for (std::size_t u = begin; u < end; ++u) {
-      const Index3 c = coarse.cellOfUnknown[u];
-      double sum = 0.0;
-      for (int dk = 0; dk < 4; ++dk)
-        for (int dj = 0; dj < 4; ++dj)
-          for (int di = 0; di < 4; ++di) {
-            const int i = 2 * c[0] - 1 + di, j = 2 * c[1] - 1 + dj, k = 2 * c[2] - 1 + dk;
-            if (!level.unknownOfCell.contains(i, j, k)) continue;
-            const std::int32_t f = level.unknownOfCell(i, j, k);
-            if (f < 0) continue;
-            sum += kGatherWeights[di] * kGatherWeights[dj] * kGatherWeights[dk] *
-                   level.prolongationScale[f] * residual[f];
-          }
-      coarse.rhs[u] = kRestrictionScale * sum;
-    }
-  });
+  forEachBlock(coarse.cellOfUnknown.size(), kUnknownBlock,
+               [&](std::size_t, std::size_t begin, std::size_t end) {
+                 for (std::size_t u = begin; u < end; ++u) {
+                   const Index3 c = coarse.cellOfUnknown[u];
+                   double sum = 0.0;
+                   for (int dk = 0; dk < 4; ++dk)
+                     for (int dj = 0; dj < 4; ++dj)
+                       for (int di = 0; di < 4; ++di) {
+                         const int i = 2 * c[0] - 1 + di, j = 2 * c[1] - 1 + dj,
+                                   k = 2 * c[2] - 1 + dk;
+                         if (!level.unknownOfCell.contains(i, j, k)) continue;
+                         const std::int32_t f = level.unknownOfCell(i, j, k);
+                         if (f < 0) continue;
+                         sum += kGatherWeights[di] * kGatherWeights[dj] * kGatherWeights[dk] *
+                                level.prolongationScale[f] * residual[f];
+                       }
+                   coarse.rhs[u] = kRestrictionScale * sum;
+                 }
+               });
 
   vCycle(l + 1, A, coarse.rhs, coarse.solution);
 
   // Prolongation P: trilinear from the 8 nearest coarse cells (0 in air and solid cells),
   // renormalised over the non-solid ones.
-  forEachBlock(M.size(), PcgSolver::kReductionBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
+  forEachBlock(M.size(), kUnknownBlock, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t u = begin; u < end; ++u) {
       const Index3 c = level.cellOfUnknown[u];
       const std::array<std::array<int, 2>, 3> p{parents(c[0]), parents(c[1]), parents(c[2])};

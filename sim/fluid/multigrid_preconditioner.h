@@ -11,6 +11,7 @@
 
 #include "sim/fluid/array3.h"
 #include "sim/fluid/pcg_solver.h"
+#include "sim/fluid/seven_point_matrix.h"
 
 namespace fluidsound::sim {
 
@@ -72,6 +73,10 @@ class MultigridPreconditioner {
   /// sweeps weighted by the band's share of the unknowns. Coarse levels are not counted (each
   /// has ≤ 1/8 of the cells of the one above: ≤ 1/7 more in total).
   double fineSweepsPerApply() const;
+
+  /// One V-cycle per apply as the callable of PcgSolver::solve, its work fineSweepsPerApply();
+  /// `fineMatrix` as for apply, and it must outlive the callable's use.
+  PcgPreconditioner forSolve(const SevenPointMatrix& fineMatrix);
 
   std::size_t levelCount() const { return levels_.size(); }
   /// Unknowns of level ℓ (ℓ = 0 is the solver grid).
