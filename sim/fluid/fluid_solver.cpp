@@ -341,24 +341,20 @@ FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer)
   return stats;
 }
 
-double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver& observer) {
+void FluidSolver::placeSolidsAndEmit(double dt, FrameStats& stats) {
   Workspace& w = *work_;
   if (w.solidsMove)
     w.solids = solidBoundaryAt(grid_, scene_.domain, scene_.solids, w.meshWalls, time_ + dt);
   for (std::size_t e = 0; e < scene_.emitters.size(); ++e)
     stats.particlesEmitted +=
-        emitParticles(particles_, scene_.emitters[e], w.emitters[e], time_, time_ + dt, grid_,
-                      scene_.solver.particlesPerCell, w.solids.nodeDistance, scene_.seed, e);
+        emitParticles(particles_, scene_.emitters[e], w.emitters[e], time_, time_ + dt,
+                      EmissionSetting{grid_, w.solids.nodeDistance, scene_.solver.particlesPerCell,
+                                      scene_.seed, e});
   assignParticleIds(particles_.id, nextParticleId_);
-  using Clock = std::chrono::steady_clock;
-  auto mark = Clock::now();
-  const auto lap = [&mark](double& total) {
-    const auto now = Clock::now();
-    total += std::chrono::duration<double>(now - mark).count();
-    mark = now;
-  };
-  FrameStats::StageSeconds& seconds = stats.stageSeconds;
-  // 1. Particles → grid.
+}
+
+const CellIndex& FluidSolver::particlesToFaces() {
+  Workspace& w = *work_;
   const CellIndex& index = sortParticlesByCell(particles_, grid_, w.transfer);
   particlesToGrid(particles_, grid_, scene_.solver.transfer, velocity_, w.weight, w.transfer);
   for (int a = 0; a < 3; ++a) {
@@ -370,24 +366,11 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
                         for (std::size_t f = r.begin(); f < r.end(); ++f) reached[f] = weight[f] > 0.0f;
                       });
   }
-  lap(seconds.transfer);
-  extrapolateVelocity(velocity_, w.reached, kExtraLayers);
-  const bool flip = scene_.solver.transfer == TransferScheme::Flip;
-  if (flip) w.oldVelocity = velocity_;  // APIC does not read it
-  // 2. Free surface, held to the particles before gravity changes the velocity it reads.
-  liquidPhi_ = surfaceFromParticles(index);
-  if (usesLevelSet()) {
-    levelSet_.holdToParticles(liquidPhi_, index, velocity_, w.solids.sceneNodeDistance,
-                              levelSetHold());
-    liquidPhi_ = levelSet_.phi();
-  }
-  lap(seconds.surface);
-  // 3. Body forces, then the pressure projection.
-  for (int a = 0; a < 3; ++a) {
-    const float dv = static_cast<float>(scene_.gravity[a] * dt);
-    for (float& u : velocity_[a].values()) u += dv;
-  }
-  lap(seconds.forces);
+  return index;
+}
+
+void FluidSolver::projectPressure(double dt, FrameStats& stats) {
+  Workspace& w = *work_;
   PressureSettings settings;
   settings.tolerance = scene_.solver.pressureTolerance;
   settings.maxIterations = scene_.solver.maxPressureIterations;
@@ -412,6 +395,40 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
                maxRelativeDivergence(
                    velocity_, pressurePhi, w.solids.faceOpen, w.solids.faceVelocity, grid_,
                    std::hypot(scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]) * dt));
+}
+
+double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver& observer) {
+  Workspace& w = *work_;
+  placeSolidsAndEmit(dt, stats);
+  using Clock = std::chrono::steady_clock;
+  auto mark = Clock::now();
+  const auto lap = [&mark](double& total) {
+    const auto now = Clock::now();
+    total += std::chrono::duration<double>(now - mark).count();
+    mark = now;
+  };
+  FrameStats::StageSeconds& seconds = stats.stageSeconds;
+  // 1. Particles → grid.
+  const CellIndex& index = particlesToFaces();
+  lap(seconds.transfer);
+  extrapolateVelocity(velocity_, w.reached, kExtraLayers);
+  const bool flip = scene_.solver.transfer == TransferScheme::Flip;
+  if (flip) w.oldVelocity = velocity_;  // APIC does not read it
+  // 2. Free surface, held to the particles before gravity changes the velocity it reads.
+  liquidPhi_ = surfaceFromParticles(index);
+  if (usesLevelSet()) {
+    levelSet_.holdToParticles(liquidPhi_, index, velocity_, w.solids.sceneNodeDistance,
+                              levelSetHold());
+    liquidPhi_ = levelSet_.phi();
+  }
+  lap(seconds.surface);
+  // 3. Body forces, then the pressure projection.
+  for (int a = 0; a < 3; ++a) {
+    const float dv = static_cast<float>(scene_.gravity[a] * dt);
+    for (float& u : velocity_[a].values()) u += dv;
+  }
+  lap(seconds.forces);
+  projectPressure(dt, stats);
   lap(seconds.pressure);
   // 4. Velocity beyond the liquid, grid → particles, advection.
   extrapolateVelocity(velocity_, w.pressure.validFaces(), static_cast<int>(std::ceil(scene_.time.cfl)) + kExtraLayers);
