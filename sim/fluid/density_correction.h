@@ -34,12 +34,14 @@ struct DensityCorrectionReport {
 
 /// The liquid a correction reads (views: the caller keeps the arrays alive during the call).
 struct DensityCorrectionInput {
-  const Array3f&
-      pressurePhi;  ///< the liquid distance the pressure solve uses (extended into solids) [m]
-  const Array3f& particlePhi;  ///< the particles' own surface (liquid_surface.h) [m]
-  int perCell = 8;             ///< particles per cell of the seeding (ρ/ρ₀ = 1)
-  double solidTime =
-      0.0;  ///< [s] where the mesh solids are placed (the correction is instantaneous)
+  /// The liquid distance the pressure solve uses (extended into solids) [m].
+  const Array3f& pressurePhi;
+  /// The particles' own surface (liquid_surface.h) [m].
+  const Array3f& particlePhi;
+  /// Particles per cell of the seeding (ρ/ρ₀ = 1).
+  int perCell = 8;
+  /// [s] where the mesh solids are placed (the correction is instantaneous).
+  double solidTime = 0.0;
 };
 
 /// @brief Moves the particles by D = −∇q, the displacement [m] whose divergence in each liquid

@@ -125,7 +125,8 @@ Index3 upFromGravity(const Vec3& gravity) {
 }  // namespace
 
 struct FluidSolver::Workspace {
-  SolidBoundary solids;  ///< at the current time (rebuilt per substep when solids move)
+  /// The solids at the current time (rebuilt at every substep's end time when solids move).
+  SolidBoundary solids;
   std::array<Array3f, 3> weight;        ///< particle weight per face (P2G)
   MacVelocity oldVelocity;              ///< grid velocity before forces (FLIP)
   TransferWorkspace transfer;           ///< sort and particle → grid buffers, reused every substep

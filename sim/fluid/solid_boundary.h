@@ -16,16 +16,20 @@ namespace fluidsound::sim {
 
 /// The solid boundary of the liquid at one time, on the solver grid.
 struct SolidBoundary {
-  GridGeometry grid;     ///< the solver grid the fields below are sampled on
-  Domain domain;         ///< the box: closed faces are walls, liquid leaving an open one is deleted
-  Array3f nodeDistance;  ///< solid signed distance at the nodes, domain walls included [m]
-  Array3f sceneNodeDistance;  ///< the same for the scene's solids alone (no domain walls) [m]
-  std::array<Array3f, 3>
-      faceOpen;  ///< open fraction of each MAC face [0, 1], thin mesh walls closed
-  std::array<Array3f, 3>
-      faceVelocity;  ///< solid velocity at each MAC face, its normal component [m/s]
-  const SolidMeshRays* meshes =
-      nullptr;  ///< ray queries against the mesh solids (never null; may be empty)
+  /// The solver grid the fields below are sampled on.
+  GridGeometry grid;
+  /// The box: closed faces are walls, liquid leaving through an open one is deleted.
+  Domain domain;
+  /// Solid signed distance at the nodes, domain walls included [m].
+  Array3f nodeDistance;
+  /// The same for the scene's solids alone (no domain walls) [m].
+  Array3f sceneNodeDistance;
+  /// Open fraction of each MAC face [0, 1], the faces across thin mesh walls closed.
+  std::array<Array3f, 3> faceOpen;
+  /// Solid velocity at each MAC face, its normal component [m/s].
+  std::array<Array3f, 3> faceVelocity;
+  /// Ray queries against the mesh solids (never null; may be empty).
+  const SolidMeshRays* meshes = nullptr;
 };
 
 /// The times [s] at which the mesh solids are placed for a particle move: where it starts and
