@@ -51,7 +51,8 @@ bool surroundedBy(const Array3f& phi, int i, int j, int k, double below) {
 /// against a solid as anywhere (a solid then displaces its own volume, not more).
 /// @param solidCentre  the scene solids' distance at the cell centre [m]
 double expectedDensity(const Array3f& phi, const Array3f& sceneSolidNodes, double solidCentre,
-                       const GridGeometry& grid, int i, int j, int k) {
+                       const GridGeometry& grid, const Index3& cell) {
+  const int i = cell[0], j = cell[1], k = cell[2];
   const double h = grid.cellSize, value = phi(i, j, k);
   const bool nearSolid = solidCentre < 1.5 * h;
   if (value <= -1.5 * h && !nearSolid) return 1.0;
@@ -121,12 +122,13 @@ Array3f relativeParticleDensity(const Particles& particles, const CellIndex& ind
 }
 
 DensityCorrectionReport correctParticleDensity(Particles& particles, const CellIndex& index,
-                                               const Array3f& pressurePhi, const Array3f& particlePhi,
-                                               const std::array<Array3f, 3>& faceOpen,
-                                               const SolidBoundary& solids, const Array3f& sceneSolidNodes,
-                                               const Domain& domain,
-                                               const GridGeometry& grid, int perCell, PressureSolver& solver,
+                                               const DensityCorrectionInput& liquid,
+                                               const SolidBoundary& solids, PressureSolver& solver,
                                                const PressureSettings& settings) {
+  const GridGeometry& grid = solids.grid;
+  const Array3f& pressurePhi = liquid.pressurePhi;
+  const Array3f& sceneSolidNodes = solids.sceneNodeDistance;
+  const int perCell = liquid.perCell;
   DensityCorrectionReport report;
   const Array3f density = relativeParticleDensity(particles, index, grid, perCell);
   Array3f strain(grid.cells, 0.0f);  // target divergence of D [-] (D in metres, "Δt" = 1)
@@ -142,7 +144,8 @@ DensityCorrectionReport correctParticleDensity(Particles& particles, const CellI
         solid /= 8.0;
         if (solid <= 0.0) continue;  // a cell inside a solid holds no particles by design
         const double excess =
-            density(i, j, k) - expectedDensity(particlePhi, sceneSolidNodes, solid, grid, i, j, k);
+            density(i, j, k) -
+            expectedDensity(liquid.particlePhi, sceneSolidNodes, solid, grid, {i, j, k});
         const double banded = excess > kDensityDeadBand    ? excess - kDensityDeadBand
                               : excess < -kDensityDeadBand ? excess + kDensityDeadBand
                                                            : 0.0;
@@ -155,15 +158,19 @@ DensityCorrectionReport correctParticleDensity(Particles& particles, const CellI
   const std::array<Array3f, 3> noSolidMotion{Array3f(grid.faceCount(0), 0.0f), Array3f(grid.faceCount(1), 0.0f),
                                              Array3f(grid.faceCount(2), 0.0f)};
   // With "density" 1 and "Δt" 1 the projection's update is D −= ∇q/h·h: a displacement in metres.
-  report.solve = solver.project(displacement, pressurePhi, faceOpen, noSolidMotion, grid, 1.0, 1.0, settings, &strain);
+  report.solve = solver.project(displacement,
+                                PressureProblem{pressurePhi, solids.faceOpen, noSolidMotion, grid,
+                                                /*density=*/1.0, /*dt=*/1.0, &strain},
+                                settings);
   extrapolateVelocity(displacement, solver.validFaces(), kExtendedLayers);
   for (int a = 0; a < 3; ++a) {  // no displacement through walls
     auto& d = displacement[a].values();
-    const auto& open = faceOpen[a].values();
+    const auto& open = solids.faceOpen[a].values();
     for (std::size_t f = 0; f < d.size(); ++f)
       if (open[f] <= 0.0f) d[f] = 0.0f;
   }
-  report.particlesDeleted = advectParticles(particles, displacement, grid, solids, domain, 1.0);
+  report.particlesDeleted = advectParticles(particles, displacement, solids,
+                                            SolidTimes{liquid.solidTime, liquid.solidTime}, 1.0);
   return report;
 }
 

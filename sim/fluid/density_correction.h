@@ -15,7 +15,7 @@
 #include "sim/fluid/particle_transfer.h"
 #include "sim/fluid/particles.h"
 #include "sim/fluid/pressure_solver.h"
-#include "sim/fluid/fluid_scene.h"
+#include "sim/fluid/solid_boundary.h"
 
 namespace fluidsound::sim {
 
@@ -32,6 +32,18 @@ struct DensityCorrectionReport {
   std::size_t particlesDeleted = 0;  ///< moved through an open domain face
 };
 
+/// The liquid a correction reads (views: the caller keeps the arrays alive during the call).
+struct DensityCorrectionInput {
+  /// The liquid distance the pressure solve uses (extended into solids) [m].
+  const Array3f& pressurePhi;
+  /// The particles' own surface (liquid_surface.h) [m].
+  const Array3f& particlePhi;
+  /// Particles per cell of the seeding (ρ/ρ₀ = 1).
+  int perCell = 8;
+  /// [s] where the mesh solids are placed (the correction is instantaneous).
+  double solidTime = 0.0;
+};
+
 /// @brief Moves the particles by D = −∇q, the displacement [m] whose divergence in each liquid
 ///        cell is the target strain s = ρ/ρ₀ − ρ_expected beyond a dead band of ±0.25 (the noise
 ///        of jittered particles is left alone): too dense spreads, too thin draws in.
@@ -44,20 +56,12 @@ struct DensityCorrectionReport {
 ///        solids: the pressure projection's operator with a target divergence. D is extended two
 ///        cells beyond the liquid, set to 0 on closed faces, and the particles move by the
 ///        midpoint rule, pushed out of solids like advection. Velocities are not changed.
-/// @param pressurePhi      the liquid distance the pressure solve uses (extended into solids) [m]
-/// @param particlePhi      the particles' own surface (liquid_surface.h) [m]
-/// @param solids           solid distance at the nodes, domain walls included [m], and the mesh
-///                         solids' ray queries (a move that would cross a mesh wall stops at it;
-///                         timeFrom = timeTo: the correction is instantaneous)
-/// @param sceneSolidNodes  the same for the scene's solids alone [m]
-/// @param settings         the solve's tolerance (a loose one, ~1e-3, is enough: this is a
-///                         correction that repeats every frame)
+/// @param solids    the solids and the grid: a move that would cross a mesh wall stops at it
+/// @param settings  the solve's tolerance (a loose one, ~1e-3, is enough: this is a correction
+///                  that repeats every frame)
 DensityCorrectionReport correctParticleDensity(Particles& particles, const CellIndex& index,
-                                               const Array3f& pressurePhi, const Array3f& particlePhi,
-                                               const std::array<Array3f, 3>& faceOpen,
-                                               const SolidBoundary& solids, const Array3f& sceneSolidNodes,
-                                               const Domain& domain,
-                                               const GridGeometry& grid, int perCell, PressureSolver& solver,
+                                               const DensityCorrectionInput& liquid,
+                                               const SolidBoundary& solids, PressureSolver& solver,
                                                const PressureSettings& settings);
 
 }  // namespace fluidsound::sim

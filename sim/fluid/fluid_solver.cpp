@@ -1,17 +1,17 @@
 // sim/fluid/fluid_solver.cpp — see fluid_solver.h.
 #include "sim/fluid/fluid_solver.h"
 
-#include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cmath>
-#include <stdexcept>
-#include <string>
-#include <variant>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <variant>
 
 #include "sim/fluid/density_correction.h"
 #include "sim/fluid/liquid_surface.h"
@@ -22,6 +22,7 @@
 #include "sim/fluid/particle_transfer.h"
 #include "sim/fluid/pressure_solver.h"
 #include "sim/fluid/simulation_failure.h"
+#include "sim/fluid/solid_boundary.h"
 #include "sim/fluid/solid_geometry.h"
 #include "sim/fluid/solid_mesh_rays.h"
 #include "sim/fluid/thin_wall_faces.h"
@@ -53,12 +54,11 @@ constexpr double kLevelSetMarginCells = 3.0;
 /// Faces wholly inside solids move with the solid (after extrapolation filled them with liquid
 /// velocities): no particle is carried into a wall (Batty's Fluid3D `constrain_velocity`, here
 /// for the whole velocity of closed faces).
-void constrainToSolids(MacVelocity& velocity, const std::array<Array3f, 3>& faceOpen,
-                       const std::array<Array3f, 3>& solidVelocity) {
+void constrainToSolids(MacVelocity& velocity, const SolidBoundary& solids) {
   for (int a = 0; a < 3; ++a) {
     auto& u = velocity[a].values();
-    const auto& open = faceOpen[a].values();
-    const auto& solid = solidVelocity[a].values();
+    const auto& open = solids.faceOpen[a].values();
+    const auto& solid = solids.faceVelocity[a].values();
     for (std::size_t f = 0; f < u.size(); ++f)
       if (open[f] <= 0.0f) u[f] = solid[f];
   }
@@ -79,8 +79,9 @@ void constrainToSolids(MacVelocity& velocity, const std::array<Array3f, 3>& face
 /// with a 15° floor, 2.9 mm/s with this rule. Along a wall off the node planes the cut cells of
 /// a column read φ ≈ 0 one above the other, hence "or such a cut cell". The topmost cut cell,
 /// at a contact line, has air above it and is left alone.
-Array3f extendIntoSolids(const Array3f& liquidPhi, const Array3f& solidNodes, const GridGeometry& grid,
-                         const Index3& up) {
+Array3f extendIntoSolids(const Array3f& liquidPhi, const SolidBoundary& solids, const Index3& up) {
+  const Array3f& solidNodes = solids.nodeDistance;
+  const GridGeometry& grid = solids.grid;
   Array3f phi = liquidPhi;
   const float inside = static_cast<float>(-0.5 * grid.cellSize);
   // A cell a solid cuts (a corner inside it) whose φ reads no higher than just above its centre.
@@ -121,19 +122,11 @@ Index3 upFromGravity(const Vec3& gravity) {
   up[axis] = gravity[axis] > 0.0 ? -1 : 1;
   return up;
 }
-
-/// The domain with every face open: its solid distance is that of the scene's solids alone.
-Domain withoutWalls(Domain domain) {
-  domain.open.fill(true);
-  return domain;
-}
 }  // namespace
 
 struct FluidSolver::Workspace {
-  Array3f solidNodes;                   ///< solid signed distance at nodes [m]
-  Array3f sceneSolidNodes;              ///< the same without the domain walls
-  std::array<Array3f, 3> faceOpen;      ///< fraction of each face open to liquid [-]
-  std::array<Array3f, 3> solidVelocity; ///< solid velocity at faces [m/s]
+  /// The solids at the current time (rebuilt at every substep's end time when solids move).
+  SolidBoundary solids;
   std::array<Array3f, 3> weight;        ///< particle weight per face (P2G)
   MacVelocity oldVelocity;              ///< grid velocity before forces (FLIP)
   TransferWorkspace transfer;           ///< sort and particle → grid buffers, reused every substep
@@ -170,13 +163,9 @@ FluidSolver::FluidSolver(const FluidScene& scene, FluidProperties properties)
   work_->emitters.resize(scene.emitters.size());
   for (const Solid& s : scene.solids) work_->solidsMove = work_->solidsMove || !s.path.empty();
   work_->meshWalls = SolidMeshRays(scene.solids);
-  work_->solidNodes = solidNodeDistance(grid_, scene.domain, scene.solids, 0.0);
-  work_->sceneSolidNodes = solidNodeDistance(grid_, withoutWalls(scene.domain), scene.solids, 0.0);
-  work_->faceOpen = faceOpenFractions(work_->solidNodes, grid_);
-  closeFacesAcrossThinWalls(work_->faceOpen, work_->solidNodes, work_->meshWalls, grid_, 0.0);
-  work_->solidVelocity = solidFaceVelocity(grid_, scene.domain, scene.solids, 0.0);
+  work_->solids = solidBoundaryAt(grid_, scene.domain, scene.solids, work_->meshWalls, 0.0);
   const int perCell = scene.solver.particlesPerCell;
-  particles_ = seedLiquid(grid_, scene.liquid, work_->solidNodes, perCell, scene.seed);
+  particles_ = seedLiquid(grid_, scene.liquid, work_->solids.nodeDistance, perCell, scene.seed);
   assignParticleIds(particles_.id, nextParticleId_);
   // 0.8 × the mean particle spacing h/∛n: centres the Zhu–Bridson surface of a seeded layer on
   // the layer's top (measured in tests/sim/fluid/particle_transfer_test.cpp).
@@ -187,10 +176,12 @@ FluidSolver::FluidSolver(const FluidScene& scene, FluidProperties properties)
   particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight, work_->transfer);
   liquidPhi_ = surfaceFromParticles(index);
   if (usesLevelSet()) {
-    levelSet_ = LiquidLevelSet(scene, grid_, work_->solidNodes);
-    levelSet_.holdToParticles(liquidPhi_, index, velocity_, work_->sceneSolidNodes, levelSetHold());
+    levelSet_ = LiquidLevelSet(scene, grid_, work_->solids.nodeDistance);
+    levelSet_.holdToParticles(liquidPhi_, index, velocity_, work_->solids.sceneNodeDistance,
+                              levelSetHold());
     liquidPhi_ = levelSet_.phi();
-    liquidVolumeTarget_ = liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+    liquidVolumeTarget_ =
+        liquidVolumeOutsideSolids(liquidPhi_, work_->solids.sceneNodeDistance, grid_);
   }
 }
 
@@ -199,7 +190,7 @@ std::size_t FluidSolver::fullCellCount() const {
 }
 
 double FluidSolver::liquidVolume() const {
-  return liquidVolumeOutsideSolids(liquidPhi_, work_->sceneSolidNodes, grid_);
+  return liquidVolumeOutsideSolids(liquidPhi_, work_->solids.sceneNodeDistance, grid_);
 }
 
 bool FluidSolver::usesLevelSet() const { return scene_.solver.surface == SurfaceMethod::LevelSet; }
@@ -236,10 +227,12 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   PressureSettings settings;
   settings.tolerance = kDensityCorrectionTolerance;
   settings.maxIterations = scene_.solver.maxPressureIterations;
+  const Array3f pressurePhi =
+      extendIntoSolids(particlePhi, w.solids, upFromGravity(scene_.gravity));
   const DensityCorrectionReport correction = correctParticleDensity(
-      particles_, before, extendIntoSolids(particlePhi, w.solidNodes, grid_, upFromGravity(scene_.gravity)), particlePhi, w.faceOpen,
-      SolidBoundary{w.solidNodes, w.meshWalls, time_, time_},
-      w.sceneSolidNodes, scene_.domain, grid_, scene_.solver.particlesPerCell, w.pressure, settings);
+      particles_, before,
+      DensityCorrectionInput{pressurePhi, particlePhi, scene_.solver.particlesPerCell, time_},
+      w.solids, w.pressure, settings);
   stats.particlesDeleted += correction.particlesDeleted;
   stats.densityIterations += correction.solve.iterations;
   stats.maxDensityExcess = std::max(stats.maxDensityExcess, correction.maxExcess);
@@ -249,11 +242,12 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   const CellIndex& after = sortParticlesByCell(particles_, grid_, w.transfer);
   if (usesLevelSet()) {
     // The level set held to the particles as each substep holds it, then given the liquid's volume.
-    levelSet_.holdToParticles(particlePhi, after, velocity_, w.sceneSolidNodes, levelSetHold());
+    levelSet_.holdToParticles(particlePhi, after, velocity_, w.solids.sceneNodeDistance,
+                              levelSetHold());
     const double particleVolume = std::pow(grid_.cellSize, 3) / scene_.solver.particlesPerCell;
     liquidVolumeTarget_ +=
         (static_cast<double>(stats.particlesEmitted) - static_cast<double>(leftThroughOpenFaces_)) * particleVolume;
-    levelSet_.matchVolume(liquidVolumeTarget_, w.sceneSolidNodes);
+    levelSet_.matchVolume(liquidVolumeTarget_, w.solids.sceneNodeDistance);
     liquidPhi_ = levelSet_.phi();
   } else {
     liquidPhi_ = particlePhi;
@@ -263,9 +257,9 @@ void FluidSolver::maintainParticles(FrameStats& stats) {
   limits.target = scene_.solver.particlesPerCell;
   limits.minimum = std::min(limits.minimum, limits.target);
   limits.maximum = std::max(limits.maximum, 2 * limits.target);
-  const ReseedingCount count = reseedParticles(particles_, after, particlePhi, SolidBoundary{w.solidNodes, w.meshWalls, time_, time_},
-                                               velocity_, grid_, limits,
-                                               scene_.seed, ++reseedPasses_);
+  const ReseedingCount count =
+      reseedParticles(particles_, after, particlePhi, velocity_, w.solids,
+                      ReseedingPass{limits, scene_.seed, ++reseedPasses_, time_});
   assignParticleIds(particles_.id, nextParticleId_);
   stats.particlesReseeded += count.added;
   stats.particlesThinned += count.removed;
@@ -348,28 +342,20 @@ FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer)
   return stats;
 }
 
-double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver& observer) {
+void FluidSolver::placeSolidsAndEmit(double dt, FrameStats& stats) {
   Workspace& w = *work_;
-  if (w.solidsMove) {
-    w.solidNodes = solidNodeDistance(grid_, scene_.domain, scene_.solids, time_ + dt);
-    w.sceneSolidNodes = solidNodeDistance(grid_, withoutWalls(scene_.domain), scene_.solids, time_ + dt);
-    w.faceOpen = faceOpenFractions(w.solidNodes, grid_);
-    closeFacesAcrossThinWalls(w.faceOpen, w.solidNodes, w.meshWalls, grid_, time_ + dt);
-    w.solidVelocity = solidFaceVelocity(grid_, scene_.domain, scene_.solids, time_ + dt);
-  }
+  if (w.solidsMove)
+    w.solids = solidBoundaryAt(grid_, scene_.domain, scene_.solids, w.meshWalls, time_ + dt);
   for (std::size_t e = 0; e < scene_.emitters.size(); ++e)
-    stats.particlesEmitted += emitParticles(particles_, scene_.emitters[e], w.emitters[e], time_, time_ + dt, grid_,
-                                            scene_.solver.particlesPerCell, w.solidNodes, scene_.seed, e);
+    stats.particlesEmitted +=
+        emitParticles(particles_, scene_.emitters[e], w.emitters[e], time_, time_ + dt,
+                      EmissionSetting{grid_, w.solids.nodeDistance, scene_.solver.particlesPerCell,
+                                      scene_.seed, e});
   assignParticleIds(particles_.id, nextParticleId_);
-  using Clock = std::chrono::steady_clock;
-  auto mark = Clock::now();
-  const auto lap = [&mark](double& total) {
-    const auto now = Clock::now();
-    total += std::chrono::duration<double>(now - mark).count();
-    mark = now;
-  };
-  FrameStats::StageSeconds& seconds = stats.stageSeconds;
-  // 1. Particles → grid.
+}
+
+const CellIndex& FluidSolver::particlesToFaces() {
+  Workspace& w = *work_;
   const CellIndex& index = sortParticlesByCell(particles_, grid_, w.transfer);
   particlesToGrid(particles_, grid_, scene_.solver.transfer, velocity_, w.weight, w.transfer);
   for (int a = 0; a < 3; ++a) {
@@ -381,6 +367,50 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
                         for (std::size_t f = r.begin(); f < r.end(); ++f) reached[f] = weight[f] > 0.0f;
                       });
   }
+  return index;
+}
+
+void FluidSolver::projectPressure(double dt, FrameStats& stats) {
+  Workspace& w = *work_;
+  PressureSettings settings;
+  settings.tolerance = scene_.solver.pressureTolerance;
+  settings.maxIterations = scene_.solver.maxPressureIterations;
+  // With the level set and static solids, the level runs on through them (liquid_level_set.h);
+  // otherwise extendIntoSolids' cut-cell rules (a moving solid's swept cells need them too).
+  const Array3f pressurePhi =
+      (w.solidsMove || !usesLevelSet())
+          ? extendIntoSolids(liquidPhi_, w.solids, upFromGravity(scene_.gravity))
+          : extendLevelAcrossSolids(liquidPhi_, w.solids.nodeDistance,
+                                    upFromGravity(scene_.gravity), grid_.cellSize);
+  const PressureReport report =
+      w.pressure.project(velocity_,
+                         PressureProblem{pressurePhi, w.solids.faceOpen, w.solids.faceVelocity,
+                                         grid_, properties_.density, dt},
+                         settings);
+  stats.pressureIterations += report.iterations;
+  stats.pressureResidual = std::max(stats.pressureResidual, report.relativeResidual);
+  stats.pressureConverged = stats.pressureConverged && report.converged;
+  requireFiniteFaceVelocities(velocity_, grid_, time_, "pressure projection");
+  stats.maxDivergence =
+      std::max(stats.maxDivergence,
+               maxRelativeDivergence(
+                   velocity_, pressurePhi, w.solids.faceOpen, w.solids.faceVelocity, grid_,
+                   std::hypot(scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]) * dt));
+}
+
+double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver& observer) {
+  Workspace& w = *work_;
+  placeSolidsAndEmit(dt, stats);
+  using Clock = std::chrono::steady_clock;
+  auto mark = Clock::now();
+  const auto lap = [&mark](double& total) {
+    const auto now = Clock::now();
+    total += std::chrono::duration<double>(now - mark).count();
+    mark = now;
+  };
+  FrameStats::StageSeconds& seconds = stats.stageSeconds;
+  // 1. Particles → grid.
+  const CellIndex& index = particlesToFaces();
   lap(seconds.transfer);
   extrapolateVelocity(velocity_, w.reached, kExtraLayers);
   const bool flip = scene_.solver.transfer == TransferScheme::Flip;
@@ -388,7 +418,8 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
   // 2. Free surface, held to the particles before gravity changes the velocity it reads.
   liquidPhi_ = surfaceFromParticles(index);
   if (usesLevelSet()) {
-    levelSet_.holdToParticles(liquidPhi_, index, velocity_, w.sceneSolidNodes, levelSetHold());
+    levelSet_.holdToParticles(liquidPhi_, index, velocity_, w.solids.sceneNodeDistance,
+                              levelSetHold());
     liquidPhi_ = levelSet_.phi();
   }
   lap(seconds.surface);
@@ -398,39 +429,24 @@ double FluidSolver::substep(double dt, FrameStats& stats, const SubstepObserver&
     for (float& u : velocity_[a].values()) u += dv;
   }
   lap(seconds.forces);
-  PressureSettings settings;
-  settings.tolerance = scene_.solver.pressureTolerance;
-  settings.maxIterations = scene_.solver.maxPressureIterations;
-  // With the level set and static solids, the level runs on through them (liquid_level_set.h);
-  // otherwise extendIntoSolids' cut-cell rules (a moving solid's swept cells need them too).
-  const Array3f pressurePhi = (w.solidsMove || !usesLevelSet())
-                                  ? extendIntoSolids(liquidPhi_, w.solidNodes, grid_, upFromGravity(scene_.gravity))
-                                  : extendLevelAcrossSolids(liquidPhi_, w.solidNodes, upFromGravity(scene_.gravity), grid_.cellSize);
-  const PressureReport report = w.pressure.project(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
-                                                   properties_.density, dt, settings);
-  stats.pressureIterations += report.iterations;
-  stats.pressureResidual = std::max(stats.pressureResidual, report.relativeResidual);
-  stats.pressureConverged = stats.pressureConverged && report.converged;
-  requireFiniteFaceVelocities(velocity_, grid_, time_, "pressure projection");
-  stats.maxDivergence = std::max(
-      stats.maxDivergence, maxRelativeDivergence(velocity_, pressurePhi, w.faceOpen, w.solidVelocity, grid_,
-                                            std::hypot(scene_.gravity[0], scene_.gravity[1], scene_.gravity[2]) * dt));
+  projectPressure(dt, stats);
   lap(seconds.pressure);
   // 4. Velocity beyond the liquid, grid → particles, advection.
   extrapolateVelocity(velocity_, w.pressure.validFaces(), static_cast<int>(std::ceil(scene_.time.cfl)) + kExtraLayers);
-  constrainToSolids(velocity_, w.faceOpen, w.solidVelocity);
+  constrainToSolids(velocity_, w.solids);
   gridToParticles(particles_, velocity_, flip ? w.oldVelocity : velocity_, grid_, scene_.solver);
   lap(seconds.gridToParticles);
-  const std::size_t left = advectParticles(particles_, velocity_, grid_,
-                                              SolidBoundary{w.solidNodes, w.meshWalls, time_, time_ + dt},
-                                              scene_.domain, dt);
+  const std::size_t left =
+      advectParticles(particles_, velocity_, w.solids, SolidTimes{time_, time_ + dt}, dt);
   stats.particlesDeleted += left;
   leftThroughOpenFaces_ += left;
-  if (usesLevelSet()) levelSet_.advect(velocity_, w.sceneSolidNodes, dt, std::ceil(scene_.time.cfl) + kLevelSetMarginCells);
+  if (usesLevelSet())
+    levelSet_.advect(velocity_, w.solids.sceneNodeDistance, dt,
+                     std::ceil(scene_.time.cfl) + kLevelSetMarginCells);
   lap(seconds.advection);
   if (observer) {
-    observer(LiquidState{particles_.position, particles_.velocity, particles_.id, liquidPhi_, velocity_, w.solidNodes,
-                         grid_},
+    observer(LiquidState{particles_.position, particles_.velocity, particles_.id, liquidPhi_,
+                         velocity_, w.solids.nodeDistance, grid_},
              time_, dt);
     lap(seconds.bubbles);
   }

@@ -22,6 +22,8 @@
 
 namespace fluidsound::sim {
 
+struct CellIndex;  // particle_transfer.h
+
 /// What one frame of simulation did, for the progress line and report.json.
 struct FrameStats {
   int substeps = 0;
@@ -116,11 +118,17 @@ class FluidSolver {
  private:
   struct Workspace;
   double substep(double dt, FrameStats& stats, const SubstepObserver& observer);
+  /// A substep's start: the solids placed at its end (when they move), the emitters' particles.
+  void placeSolidsAndEmit(double dt, FrameStats& stats);
+  /// Sorts the particles and transfers them to the faces (velocity_, the reached faces).
+  const CellIndex& particlesToFaces();
+  /// Makes velocity_ divergence-free in the liquid; the solve's figures into `stats`.
+  void projectPressure(double dt, FrameStats& stats);
   double stableTimeStep() const;
   /// The SubstepLimitError for a frame ending at `until` whose next step is `dt` [s].
   SubstepLimitError substepLimitError(double until, double dt) const;
   /// The liquid distance at cell centres from the sorted particles.
-  Array3f surfaceFromParticles(const struct CellIndex& index) const;
+  Array3f surfaceFromParticles(const CellIndex& index) const;
   LevelSetHold levelSetHold() const;
   bool usesLevelSet() const;  ///< scene.solver.surface is LevelSet
   /// Particles per cell that count as a full cell (half the seeding count, rounded up): the

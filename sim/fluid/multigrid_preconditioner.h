@@ -11,6 +11,7 @@
 
 #include "sim/fluid/array3.h"
 #include "sim/fluid/pcg_solver.h"
+#include "sim/fluid/seven_point_matrix.h"
 
 namespace fluidsound::sim {
 
@@ -73,6 +74,10 @@ class MultigridPreconditioner {
   /// has ≤ 1/8 of the cells of the one above: ≤ 1/7 more in total).
   double fineSweepsPerApply() const;
 
+  /// One V-cycle per apply as the callable of PcgSolver::solve, its work fineSweepsPerApply();
+  /// `fineMatrix` as for apply, and it must outlive the callable's use.
+  PcgPreconditioner forSolve(const SevenPointMatrix& fineMatrix);
+
   std::size_t levelCount() const { return levels_.size(); }
   /// Unknowns of level ℓ (ℓ = 0 is the solver grid).
   std::size_t unknowns(std::size_t level) const { return levels_[level].cellOfUnknown.size(); }
@@ -93,9 +98,24 @@ class MultigridPreconditioner {
     std::vector<double> rhs, solution, residual;
   };
 
+  /// Level 0 from the solver's unknowns: cell types, face coefficients, unknown ↔ cell.
+  static void buildFineLevel(const Array3<std::int32_t>& unknownOfCell,
+                             const std::array<Array3f, 3>& faceWeights, double coefficientScale,
+                             Level& fine);
+  /// Level 0's boundaryColour: the unknowns within kMultigridBoundaryBand cells of a cut face.
+  static void markBoundaryBand(const std::array<Array3f, 3>& faceWeights, Level& fine);
   void buildCoarseLevel(const Level& fine, Level& coarse) const;
+  /// The coarse operator from the level's cell types and face coefficients (θ = 1 at air).
+  static void assembleCoarseMatrix(Level& coarse);
+  /// Colours, work vectors and prolongation scales of level l (once all levels exist).
+  void prepareLevel(std::size_t l);
   void vCycle(std::size_t level, const SevenPointMatrix& A, std::span<const double> b,
               std::span<double> x);
+  /// Level l's residual b − M·x, restricted (Pᵀ/8) into level l + 1's rhs.
+  void restrictResidual(std::size_t l, const SevenPointMatrix& M, std::span<const double> b,
+                        std::span<const double> x);
+  /// x += P·(level l + 1's solution), M level l's operator.
+  void prolongCorrection(std::size_t l, const SevenPointMatrix& M, std::span<double> x);
 
   std::vector<Level> levels_;
 };

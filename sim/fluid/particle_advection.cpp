@@ -18,8 +18,11 @@ constexpr double kSolidMargin = 0.05;
 constexpr double kGradientStep = 0.25;
 }  // namespace
 
-std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, const GridGeometry& grid,
-                            const SolidBoundary& solids, const Domain& domain, double dt) {
+std::size_t advectParticles(Particles& particles, const MacVelocity& velocity,
+                            const SolidBoundary& solids, const SolidTimes& times, double dt) {
+  const GridGeometry& grid = solids.grid;
+  const Domain& domain = solids.domain;
+  const SolidMeshRays& meshes = *solids.meshes;
   const double h = grid.cellSize;
   const Array3f& solidNodeDistance = solids.nodeDistance;
   std::vector<std::uint8_t> keep(particles.size(), 1);
@@ -29,7 +32,8 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
     const Vec3 mid{x[0] + 0.5 * dt * u0[0], x[1] + 0.5 * dt * u0[1], x[2] + 0.5 * dt * u0[2]};
     const Vec3 u1 = interpolateVelocity(velocity, grid, mid);
     Vec3 y{x[0] + dt * u1[0], x[1] + dt * u1[1], x[2] + dt * u1[2]};
-    if (const auto stop = solids.meshes.firstCrossing(x, y, solids.timeFrom, solids.timeTo, kMeshWallOffsetCells * h)) {
+    if (const auto stop =
+            meshes.firstCrossing(x, y, times.from, times.to, kMeshWallOffsetCells * h)) {
       y = stop->position;
       Vec3f& v = particles.velocity[p];
       double into = 0.0;  // velocity towards the wall, relative to it [m/s] (normal faces the particle)
@@ -63,7 +67,7 @@ std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, c
       Vec3 pushed = y;
       if (norm > 0.0)
         for (int a = 0; a < 3; ++a) pushed[a] += (-d + kSolidMargin * h) * gradient[a] / norm;
-      if (!solids.meshes.crosses(y, pushed, solids.timeTo)) {
+      if (!meshes.crosses(y, pushed, times.to)) {
         y = pushed;
         if (norm > 0.0) {  // no velocity into the wall it was pushed back from (as at a mesh wall)
           Vec3f& v = particles.velocity[p];

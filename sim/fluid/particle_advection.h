@@ -3,23 +3,13 @@
 #pragma once
 
 #include "sim/fluid/array3.h"
+#include "sim/fluid/fluid_scene.h"
 #include "sim/fluid/grid.h"
 #include "sim/fluid/mac_velocity.h"
 #include "sim/fluid/particles.h"
-#include "sim/fluid/fluid_scene.h"
-#include "sim/fluid/solid_mesh_rays.h"
+#include "sim/fluid/solid_boundary.h"
 
 namespace fluidsound::sim {
-
-/// The scene's solids as a particle move sees them: the signed distance at the grid nodes
-/// (domain walls, boxes, spheres, meshes as far as the grid resolves them) and ray queries
-/// against the mesh solids (walls of any thickness), over the move's time span.
-struct SolidBoundary {
-  const Array3f& nodeDistance;  ///< solid signed distance at the nodes at timeTo [m]
-  const SolidMeshRays& meshes;  ///< the mesh solids (empty: none)
-  double timeFrom = 0.0;        ///< [s] the time the move starts (kinematic solids' placement)
-  double timeTo = 0.0;          ///< [s] the time it ends (= timeFrom for an instantaneous move)
-};
 
 /// How far short of a mesh surface a stopped particle is left, in cells: far above the float
 /// rounding of positions (≈ 1e-7 of the coordinates), far below anything the grid resolves.
@@ -36,7 +26,9 @@ inline constexpr double kMeshWallOffsetCells = 1e-3;
 ///          solid, unless that push would cross a mesh surface (a thin wall the grid does not
 ///          resolve: the ray test is the truth).
 /// @return particles deleted at open faces
-std::size_t advectParticles(Particles& particles, const MacVelocity& velocity, const GridGeometry& grid,
-                            const SolidBoundary& solids, const Domain& domain, double dt);
+/// @param solids  the solids (their grid is the velocity's) at times.to; the mesh solids move
+///                from times.from to times.to during the step
+std::size_t advectParticles(Particles& particles, const MacVelocity& velocity,
+                            const SolidBoundary& solids, const SolidTimes& times, double dt);
 
 }  // namespace fluidsound::sim

@@ -35,9 +35,10 @@ double emittedVolume(const Emitter& emitter, double a, double b) {
   return std::numbers::pi * emitter.radius * emitter.radius * emitter.speed * active;
 }
 
-std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterState& state, double t0, double t1,
-                          const GridGeometry& grid, int perCell, const Array3f& solidNodes, std::uint64_t seed,
-                          std::size_t emitterIndex) {
+std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterState& state,
+                          double t0, double t1, const EmissionSetting& setting) {
+  const GridGeometry& grid = setting.grid;
+  const int perCell = setting.perCell;
   const double from = std::max(t0, emitter.start), to = std::min(t1, emitter.end);
   if (!(to > from)) return 0;
   const double h = grid.cellSize;
@@ -50,7 +51,8 @@ std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterS
   for (std::size_t q = 0; q < count; ++q) {
     // One generator per particle, keyed by the emitter and the draw number: the same particles
     // whatever the substeps' lengths were before.
-    std::mt19937_64 random(cellStream(seed ^ (0xA24BAED4963EE407ull * (emitterIndex + 1)), state.draws++));
+    std::mt19937_64 random(cellStream(
+        setting.seed ^ (0xA24BAED4963EE407ull * (setting.emitterIndex + 1)), state.draws++));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const double instant = from + (to - from) * unit(random);
     const double radius = emitter.radius * std::sqrt(unit(random));
@@ -61,7 +63,7 @@ std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterS
       x[a] = emitter.center[a] + along * emitter.normal[a] + radius * (std::cos(angle) * u[a] + std::sin(angle) * v[a]);
     ++state.emitted;
     if (!insideGrid(grid, x)) continue;  // the part of the disk (or the flow) beyond the domain
-    if (interpolateNodes(solidNodes, grid, x) <= 0.0f) continue;
+    if (interpolateNodes(setting.solidNodes, grid, x) <= 0.0f) continue;
     const float s = static_cast<float>(emitter.speed);
     particles.push({static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2])},
                    {s * static_cast<float>(emitter.normal[0]), s * static_cast<float>(emitter.normal[1]),

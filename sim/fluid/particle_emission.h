@@ -19,6 +19,16 @@ struct EmitterState {
   std::size_t emitted = 0;   ///< particles emitted so far
 };
 
+/// The grid an emitter pours into and the random stream of its draws (views: the caller keeps
+/// them alive during the call).
+struct EmissionSetting {
+  const GridGeometry& grid;
+  const Array3f& solidNodes;     ///< solid signed distance at the nodes [m]; size grid.nodeCount()
+  int perCell = 8;               ///< particles per cell volume h³
+  std::uint64_t seed = 1;        ///< the scene seed
+  std::size_t emitterIndex = 0;  ///< separates the emitters' random streams
+};
+
 /// @brief Appends the particles an emitter releases during (t0, t1]: the liquid that flowed out of
 ///        the disk in that time, π r² · speed · Δt_active of it, at `perCell` particles per cell
 ///        volume h³ (a running fraction carries over, so the count over any run matches the flux
@@ -27,11 +37,9 @@ struct EmitterState {
 ///        velocity is speed × normal. Particles that would start inside a solid or outside the
 ///        grid's box are dropped (and counted as emitted: the nozzle is blocked there, or pours
 ///        beyond the domain), so every particle appended lies in the domain.
-/// @param seed          the scene seed; `emitterIndex` separates the emitters' random streams
 /// @return particles appended
-std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterState& state, double t0, double t1,
-                          const GridGeometry& grid, int perCell, const Array3f& solidNodes, std::uint64_t seed,
-                          std::size_t emitterIndex);
+std::size_t emitParticles(Particles& particles, const Emitter& emitter, EmitterState& state,
+                          double t0, double t1, const EmissionSetting& setting);
 
 /// Volume [m³] an emitter releases between times a and b: π r² · speed · |[a, b] ∩ [start, end]|.
 double emittedVolume(const Emitter& emitter, double a, double b);

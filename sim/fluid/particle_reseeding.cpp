@@ -12,9 +12,12 @@
 
 namespace fluidsound::sim {
 
-ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, const Array3f& liquidPhi,
-                               const SolidBoundary& solids, const MacVelocity& velocity, const GridGeometry& grid,
-                               const ReseedingLimits& limits, std::uint64_t seed, std::uint64_t pass) {
+ReseedingCount reseedParticles(Particles& particles, const CellIndex& index,
+                               const Array3f& liquidPhi, const MacVelocity& velocity,
+                               const SolidBoundary& solids, const ReseedingPass& pass) {
+  const GridGeometry& grid = solids.grid;
+  const SolidMeshRays& meshes = *solids.meshes;
+  const ReseedingLimits& limits = pass.limits;
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const float inside = static_cast<float>(-0.5 * grid.cellSize);
   // Each slab k builds its part of the new particle list in cell order; slabs are joined in order.
@@ -33,19 +36,20 @@ ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, con
         if (held >= static_cast<std::size_t>(limits.minimum) || liquidPhi(i, j, k) > inside) continue;
         // An empty cell that a mesh wall cuts is not refilled: no particle tells which side is
         // liquid, and the cell's centre may lie inside the wall.
-        if (held == 0 && solids.meshes.cutsBox(grid.worldFromGrid({double(i), double(j), double(k)}),
-                                               grid.worldFromGrid({i + 1.0, j + 1.0, k + 1.0}), solids.timeTo))
+        if (held == 0 &&
+            meshes.cutsBox(grid.worldFromGrid({double(i), double(j), double(k)}),
+                           grid.worldFromGrid({i + 1.0, j + 1.0, k + 1.0}), pass.solidTime))
           continue;
-        std::mt19937_64 random(cellStream(seed ^ (pass * 0xD1B54A32D192ED03ull), cell));
+        std::mt19937_64 random(cellStream(pass.seed ^ (pass.pass * 0xD1B54A32D192ED03ull), cell));
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         for (std::size_t n = held; n < static_cast<std::size_t>(limits.target); ++n) {
           const double u = unit(random), v = unit(random), w = unit(random);  // fixed draw order
           const Vec3 x = grid.worldFromGrid({i + u, j + v, k + w});
           if (interpolateNodes(solids.nodeDistance, grid, x) <= 0.0f) continue;
           // Not behind a mesh wall thinner than the cell, as seen from the cell's liquid.
-          if (held > 0 && !solids.meshes.empty()) {
+          if (held > 0 && !meshes.empty()) {
             const Vec3 from{particles.position[first][0], particles.position[first][1], particles.position[first][2]};
-            if (solids.meshes.crosses(from, x, solids.timeTo)) continue;
+            if (meshes.crosses(from, x, pass.solidTime)) continue;
           }
           const Vec3 vel = interpolateVelocity(velocity, grid, x);
           out.push({static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2])},

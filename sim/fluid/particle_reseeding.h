@@ -20,6 +20,14 @@ struct ReseedingLimits {
   int maximum = 16;  ///< a cell with more keeps its first `maximum` in sorted order
 };
 
+/// One reseeding pass: its limits and what makes its random positions.
+struct ReseedingPass {
+  ReseedingLimits limits;
+  std::uint64_t seed = 1;  ///< the scene seed
+  std::uint64_t pass = 0;  ///< the pass number (a new stream per pass)
+  double solidTime = 0.0;  ///< [s] where the mesh solids are placed
+};
+
 /// What one reseeding pass did.
 struct ReseedingCount {
   std::size_t added = 0, removed = 0;
@@ -30,15 +38,15 @@ struct ReseedingCount {
 ///        in the cell outside solids (and, in a cell cut by a mesh wall, on the side of the cell's
 ///        first particle: no ray from it to the new one crosses a mesh surface; an empty cell that
 ///        a mesh cuts is left empty), with the grid velocity there (affine part zero); thins cells
-///        holding more than limits.maximum. New positions come from `seed`, `pass` and the cell
-///        index, so the result is the same for any thread count.
+///        holding more than limits.maximum. New positions come from pass.seed, pass.pass and the
+///        cell index, so the result is the same for any thread count.
 /// @param particles    sorted by cell, `index` from that sort; still in cell order on return (new
 ///                     particles follow their cell's kept ones), so `index` is stale
 /// @param liquidPhi    liquid signed distance at cell centres [m]
-/// @param solids       the solids at solids.timeTo
 /// @param velocity     the grid velocity (extrapolated beyond the liquid) [m/s]
-ReseedingCount reseedParticles(Particles& particles, const CellIndex& index, const Array3f& liquidPhi,
-                               const SolidBoundary& solids, const MacVelocity& velocity, const GridGeometry& grid,
-                               const ReseedingLimits& limits, std::uint64_t seed, std::uint64_t pass);
+/// @param solids       the solids (and the grid) at pass.solidTime
+ReseedingCount reseedParticles(Particles& particles, const CellIndex& index,
+                               const Array3f& liquidPhi, const MacVelocity& velocity,
+                               const SolidBoundary& solids, const ReseedingPass& pass);
 
 }  // namespace fluidsound::sim

@@ -134,20 +134,11 @@ void particlesToGrid(const Particles& particles, const GridGeometry& grid, Trans
   particlesToGrid(particles, grid, scheme, velocity, weight, workspace);
 }
 
-void particlesToGrid(const Particles& particles, const GridGeometry& grid, TransferScheme scheme,
-                     MacVelocity& velocity, std::array<Array3f, 3>& weight, TransferWorkspace& workspace) {
-  const double h = grid.cellSize;
+namespace {
+/// The first particle of each z-slab of kSlabCells cells, and the end of the last (the particles
+/// are sorted by cell, z slowest; those outside the grid are last and belong to no slab).
+std::vector<std::size_t> slabStarts(const Particles& particles, const GridGeometry& grid) {
   const int nk = grid.cells[2];
-  // Momentum and weight sums in double, so the order of ~8 contributions per face hardly matters.
-  // The workspace keeps them at zero between calls (the conversion below clears what it reads).
-  std::array<FaceSum*, 3> sums;
-  for (int a = 0; a < 3; ++a) {
-    const Index3 n = grid.faceCount(a);
-    const std::size_t count = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-    if (workspace.faceSums[a].size() != count) workspace.faceSums[a].assign(count, FaceSum{});
-    sums[a] = workspace.faceSums[a].data();
-  }
-  // Particle ranges of each slab (particles are sorted by cell, z slowest; outside ones last).
   const int slabs = (nk + kSlabCells - 1) / kSlabCells;
   std::vector<std::size_t> slabStart(slabs + 1, particles.size());
   const auto insideBelow = [&](const Vec3f& x, int kEnd) {
@@ -160,71 +151,101 @@ void particlesToGrid(const Particles& particles, const GridGeometry& grid, Trans
         std::partition_point(particles.position.begin(), particles.position.end(),
                              [&](const Vec3f& x) { return insideBelow(x, s * kSlabCells); }) -
         particles.position.begin());
-  const auto scatterSlab = [&](int s) {
-    for (std::size_t p = slabStart[s]; p < slabStart[s + 1]; ++p) {
-      const Vec3 x = toVec3(particles.position[p]);
-      const Vec3 g = grid.gridFromWorld(x);
-      for (int a = 0; a < 3; ++a) {
-        const Stencil st = faceStencil(g, a);
-        const Index3 n = grid.faceCount(a);
-        // Per axis: the trilinear weight factors and, for APIC, C_p,a,b·(x_face − x_p)_b [m/s].
-        double wAxis[3][2], affine[3][2] = {{0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}};
-        bool inside = true;
-        for (int b = 0; b < 3; ++b) {
-          wAxis[b][0] = 1 - st.frac[b];
-          wAxis[b][1] = st.frac[b];
-          inside = inside && st.base[b] >= 0 && st.base[b] + 1 < n[b];
-          if (scheme != TransferScheme::Apic) continue;
-          for (int d = 0; d < 2; ++d) {
-            const double face = (st.base[b] + d + (a == b ? 0.0 : 0.5)) * h + grid.origin[b] - x[b];
-            affine[b][d] = particles.affine[p][a][b] * face;
-          }
-        }
-        const double v = particles.velocity[p][a];
-        FaceSum* const sum = sums[a];
-        const auto add = [&](std::size_t f, int di, int dj, int dk) {
-          const double w = wAxis[0][di] * wAxis[1][dj] * wAxis[2][dk];
-          const double vFace = scheme == TransferScheme::Apic ? v + (affine[0][di] + affine[1][dj] + affine[2][dk]) : v;
-          sum[f].momentum += w * vFace;
-          sum[f].weight += w;
-        };
-        if (inside) {
-          const std::size_t base = (static_cast<std::size_t>(st.base[2]) * n[1] + st.base[1]) * n[0] + st.base[0];
-          const std::size_t sj = n[0], sk = static_cast<std::size_t>(n[0]) * n[1];
-          for (int dk = 0; dk < 2; ++dk)
-            for (int dj = 0; dj < 2; ++dj)
-              for (int di = 0; di < 2; ++di) add(base + dk * sk + dj * sj + di, di, dj, dk);
-          continue;
-        }
-        for (int dk = 0; dk < 2; ++dk)
-          for (int dj = 0; dj < 2; ++dj)
-            for (int di = 0; di < 2; ++di) {
-              const int i = st.base[0] + di, j = st.base[1] + dj, k = st.base[2] + dk;
-              if (i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) continue;
-              add((static_cast<std::size_t>(k) * n[1] + j) * n[0] + i, di, dj, dk);
-            }
+  return slabStart;
+}
+
+/// Adds particle p's trilinear weights and (APIC: affine) momentum to the 8 faces of each
+/// velocity component around it.
+void scatterParticle(const Particles& particles, std::size_t p, const GridGeometry& grid,
+                     TransferScheme scheme, const std::array<FaceSum*, 3>& sums) {
+  const double h = grid.cellSize;
+  const Vec3 x = toVec3(particles.position[p]);
+  const Vec3 g = grid.gridFromWorld(x);
+  for (int a = 0; a < 3; ++a) {
+    const Stencil st = faceStencil(g, a);
+    const Index3 n = grid.faceCount(a);
+    // Per axis: the trilinear weight factors and, for APIC, C_p,a,b·(x_face − x_p)_b [m/s].
+    double wAxis[3][2], affine[3][2] = {{0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}};
+    bool inside = true;
+    for (int b = 0; b < 3; ++b) {
+      wAxis[b][0] = 1 - st.frac[b];
+      wAxis[b][1] = st.frac[b];
+      inside = inside && st.base[b] >= 0 && st.base[b] + 1 < n[b];
+      if (scheme != TransferScheme::Apic) continue;
+      for (int d = 0; d < 2; ++d) {
+        const double face = (st.base[b] + d + (a == b ? 0.0 : 0.5)) * h + grid.origin[b] - x[b];
+        affine[b][d] = particles.affine[p][a][b] * face;
       }
     }
+    const double v = particles.velocity[p][a];
+    FaceSum* const sum = sums[a];
+    const auto add = [&](std::size_t f, int di, int dj, int dk) {
+      const double w = wAxis[0][di] * wAxis[1][dj] * wAxis[2][dk];
+      const double vFace =
+          scheme == TransferScheme::Apic ? v + (affine[0][di] + affine[1][dj] + affine[2][dk]) : v;
+      sum[f].momentum += w * vFace;
+      sum[f].weight += w;
+    };
+    if (inside) {
+      const std::size_t base =
+          (static_cast<std::size_t>(st.base[2]) * n[1] + st.base[1]) * n[0] + st.base[0];
+      const std::size_t sj = n[0], sk = static_cast<std::size_t>(n[0]) * n[1];
+      for (int dk = 0; dk < 2; ++dk)
+        for (int dj = 0; dj < 2; ++dj)
+          for (int di = 0; di < 2; ++di) add(base + dk * sk + dj * sj + di, di, dj, dk);
+      continue;
+    }
+    for (int dk = 0; dk < 2; ++dk)
+      for (int dj = 0; dj < 2; ++dj)
+        for (int di = 0; di < 2; ++di) {
+          const int i = st.base[0] + di, j = st.base[1] + dj, k = st.base[2] + dk;
+          if (i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) continue;
+          add((static_cast<std::size_t>(k) * n[1] + j) * n[0] + i, di, dj, dk);
+        }
+  }
+}
+
+/// u = Σ w·v / Σ w and the weight Σ w on every face of component a (0 where no weight), clearing
+/// the sums for the next call.
+void facesFromSums(FaceSum* const sum, const Index3& faces, Array3f& velocity, Array3f& weight) {
+  if (velocity.size() != faces) velocity = Array3f(faces);
+  if (weight.size() != faces) weight = Array3f(faces);
+  float* const u = velocity.data();
+  float* const wsum = weight.data();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, velocity.elementCount()),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t f = r.begin(); f < r.end(); ++f) {
+                        const FaceSum fs = sum[f];
+                        wsum[f] = static_cast<float>(fs.weight);
+                        u[f] = fs.weight > 0.0 ? static_cast<float>(fs.momentum / fs.weight) : 0.0f;
+                        sum[f] = FaceSum{};
+                      }
+                    });
+}
+}  // namespace
+
+void particlesToGrid(const Particles& particles, const GridGeometry& grid, TransferScheme scheme,
+                     MacVelocity& velocity, std::array<Array3f, 3>& weight,
+                     TransferWorkspace& workspace) {
+  // Momentum and weight sums in double, so the order of ~8 contributions per face hardly matters.
+  // The workspace keeps them at zero between calls (the conversion below clears what it reads).
+  std::array<FaceSum*, 3> sums;
+  for (int a = 0; a < 3; ++a) {
+    const Index3 n = grid.faceCount(a);
+    const std::size_t count = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+    if (workspace.faceSums[a].size() != count) workspace.faceSums[a].assign(count, FaceSum{});
+    sums[a] = workspace.faceSums[a].data();
+  }
+  const std::vector<std::size_t> slabStart = slabStarts(particles, grid);
+  const int slabs = static_cast<int>(slabStart.size()) - 1;
+  // Even slabs, then odd ones: the faces two slabs share are never written by two tasks at once.
+  const auto scatterSlab = [&](int s) {
+    for (std::size_t p = slabStart[s]; p < slabStart[s + 1]; ++p)
+      scatterParticle(particles, p, grid, scheme, sums);
   };
   for (int phase = 0; phase < 2; ++phase)
     tbb::parallel_for(0, (slabs - phase + 1) / 2, [&](int t) { scatterSlab(2 * t + phase); });
-
-  for (int a = 0; a < 3; ++a) {
-    if (velocity[a].size() != grid.faceCount(a)) velocity[a] = Array3f(grid.faceCount(a));
-    if (weight[a].size() != grid.faceCount(a)) weight[a] = Array3f(grid.faceCount(a));
-    float* const u = velocity[a].data();
-    float* const wsum = weight[a].data();
-    FaceSum* const sum = sums[a];
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, velocity[a].elementCount()),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t f = r.begin(); f < r.end(); ++f) {
-                          const FaceSum fs = sum[f];
-                          wsum[f] = static_cast<float>(fs.weight);
-                          u[f] = fs.weight > 0.0 ? static_cast<float>(fs.momentum / fs.weight) : 0.0f;
-                          sum[f] = FaceSum{};
-                        }
-                      });
-  }
+  for (int a = 0; a < 3; ++a) facesFromSums(sums[a], grid.faceCount(a), velocity[a], weight[a]);
 }
 
 Vec3 interpolateVelocity(const MacVelocity& velocity, const GridGeometry& grid, const Vec3& p) {

@@ -75,10 +75,10 @@ std::ostream& operator<<(std::ostream& out, const PressureReport& r) {
              << r.matvecEquivalents << "}";
 }
 
-void PressureSolver::assemble(const MacVelocity& velocity, const Array3f& liquidPhi,
-                              const std::array<Array3f, 3>& faceOpen,
-                              const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,
-                              double density, double dt, const Array3f* targetDivergence) {
+void PressureSolver::assemble(const MacVelocity& velocity, const PressureProblem& problem) {
+  const Array3f& liquidPhi = problem.liquidPhi;
+  const std::array<Array3f, 3>& faceOpen = problem.faceOpen;
+  const GridGeometry& grid = problem.grid;
   // Number the unknowns in grid order (x fastest), as the MIC(0) sweep requires.
   unknownOfCell_ = Array3<std::int32_t>(grid.cells, -1);
   std::int32_t count = 0;
@@ -90,7 +90,7 @@ void PressureSolver::assemble(const MacVelocity& velocity, const Array3f& liquid
 
   matrix_.reset(static_cast<std::size_t>(count));
   rhs_.assign(static_cast<std::size_t>(count), 0.0);
-  const double scale = dt / (density * grid.cellSize * grid.cellSize);  // Δt/(ρh²)
+  const double scale = problem.dt / (problem.density * grid.cellSize * grid.cellSize);  // Δt/(ρh²)
   for (int k = 0; k < grid.cells[2]; ++k)
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
@@ -122,18 +122,20 @@ void PressureSolver::assemble(const MacVelocity& velocity, const Array3f& liquid
                   coefficient / surfaceFraction(phiC, liquidPhi(n[0], n[1], n[2]));
             }
           }
-        rhs_[row] = -weightedNetOutflow(velocity, faceOpen, &solidVelocity, c) / grid.cellSize;
-        if (targetDivergence != nullptr) rhs_[row] += (*targetDivergence)(c[0], c[1], c[2]);
+        rhs_[row] =
+            -weightedNetOutflow(velocity, faceOpen, &problem.solidVelocity, c) / grid.cellSize;
+        if (problem.targetDivergence != nullptr)
+          rhs_[row] += (*problem.targetDivergence)(c[0], c[1], c[2]);
       }
 }
 
-void PressureSolver::updateVelocity(MacVelocity& velocity, const Array3f& liquidPhi,
-                                    const std::array<Array3f, 3>& faceOpen,
-                                    const std::array<Array3f, 3>& solidVelocity,
-                                    const GridGeometry& grid, double density, double dt) {
-  const double gradientScale = dt / (density * grid.cellSize);  // Δt/(ρh)
+void PressureSolver::updateVelocity(MacVelocity& velocity, const PressureProblem& problem) {
+  const GridGeometry& grid = problem.grid;
+  const std::array<Array3f, 3>& faceOpen = problem.faceOpen;
+  const std::array<Array3f, 3>& solidVelocity = problem.solidVelocity;
+  const double gradientScale = problem.dt / (problem.density * grid.cellSize);  // Δt/(ρh)
   const int ni = grid.cells[0], nj = grid.cells[1];
-  const float* const phi = liquidPhi.values().data();
+  const float* const phi = problem.liquidPhi.values().data();
   const double* const pressure = pressure_.values().data();
   for (int a = 0; a < 3; ++a) {
     const Index3 n = grid.faceCount(a);
@@ -177,32 +179,34 @@ void PressureSolver::updateVelocity(MacVelocity& velocity, const Array3f& liquid
   }
 }
 
-PressureReport PressureSolver::project(MacVelocity& velocity, const Array3f& liquidPhi,
-                                       const std::array<Array3f, 3>& faceOpen,
-                                       const std::array<Array3f, 3>& solidVelocity,
-                                       const GridGeometry& grid, double density, double dt,
-                                       const PressureSettings& settings, const Array3f* targetDivergence) {
-  if (targetDivergence != nullptr) requireSize(targetDivergence->size(), grid.cells, "targetDivergence");
-  requireSize(liquidPhi.size(), grid.cells, "liquidPhi");
+PressureReport PressureSolver::project(MacVelocity& velocity, const PressureProblem& problem,
+                                       const PressureSettings& settings) {
+  const GridGeometry& grid = problem.grid;
+  const double density = problem.density, dt = problem.dt;
+  if (problem.targetDivergence != nullptr)
+    requireSize(problem.targetDivergence->size(), grid.cells, "targetDivergence");
+  requireSize(problem.liquidPhi.size(), grid.cells, "liquidPhi");
   for (int a = 0; a < 3; ++a) {
     const std::string axis = std::to_string(a);
     requireSize(velocity[a].size(), grid.faceCount(a), "velocity[" + axis + "]");
-    requireSize(faceOpen[a].size(), grid.faceCount(a), "faceOpen[" + axis + "]");
-    requireSize(solidVelocity[a].size(), grid.faceCount(a), "solidVelocity[" + axis + "]");
+    requireSize(problem.faceOpen[a].size(), grid.faceCount(a), "faceOpen[" + axis + "]");
+    requireSize(problem.solidVelocity[a].size(), grid.faceCount(a), "solidVelocity[" + axis + "]");
   }
   if (!(density > 0.0) || !(dt > 0.0) || !(grid.cellSize > 0.0))
     throw std::invalid_argument("pressure projection: density " + std::to_string(density) +
                                 " kg/m³, dt " + std::to_string(dt) + " s and cell size " +
                                 std::to_string(grid.cellSize) + " m must all be > 0");
 
-  assemble(velocity, liquidPhi, faceOpen, solidVelocity, grid, density, dt, targetDivergence);
+  assemble(velocity, problem);
+  const PcgStop stop{settings.tolerance, settings.maxIterations};
   PcgResult solve;
   if (settings.preconditioner == Preconditioner::Multigrid) {
-    multigrid_.build(unknownOfCell_, faceOpen, dt / (density * grid.cellSize * grid.cellSize));
-    solve = pcg_.solve(matrix_, rhs_, solution_, settings.tolerance, settings.maxIterations,
-                       multigrid_);
+    multigrid_.build(unknownOfCell_, problem.faceOpen,
+                     dt / (density * grid.cellSize * grid.cellSize));
+    solve = pcg_.solve(matrix_, rhs_, solution_, stop, multigrid_.forSolve(matrix_));
   } else {
-    solve = pcg_.solve(matrix_, rhs_, solution_, settings.tolerance, settings.maxIterations);
+    mic0_.build(matrix_);
+    solve = pcg_.solve(matrix_, rhs_, solution_, stop, mic0_.forSolve(matrix_));
   }
 
   pressure_ = Array3d(grid.cells, 0.0);
@@ -211,7 +215,7 @@ PressureReport PressureSolver::project(MacVelocity& velocity, const Array3f& liq
       for (int i = 0; i < grid.cells[0]; ++i)
         if (const std::int32_t row = unknownOfCell_(i, j, k); row >= 0)
           pressure_(i, j, k) = solution_[row];
-  updateVelocity(velocity, liquidPhi, faceOpen, solidVelocity, grid, density, dt);
+  updateVelocity(velocity, problem);
 
   PressureReport report;
   report.iterations = solve.iterations;

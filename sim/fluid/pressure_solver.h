@@ -11,6 +11,7 @@
 #include "sim/fluid/array3.h"
 #include "sim/fluid/grid.h"
 #include "sim/fluid/mac_velocity.h"
+#include "sim/fluid/mic0_preconditioner.h"
 #include "sim/fluid/multigrid_preconditioner.h"
 #include "sim/fluid/pcg_solver.h"
 
@@ -26,6 +27,12 @@ inline constexpr double kMinimumSurfaceFraction = 0.01;
 /// exterior is air, and p = 0 on the boundary face itself, half a cell from the liquid cell's
 /// centre; liquid that crosses it is deleted (DESIGN.md, domain `open`).
 inline constexpr double kOpenBoundarySurfaceFraction = 0.5;
+
+/// Preconditioner of the pressure solve's conjugate gradients.
+enum class Preconditioner {
+  Mic0,       ///< modified incomplete Cholesky (Bridson 2015, ch. 5); serial triangular solves
+  Multigrid,  ///< one geometric multigrid V-cycle (McAdams, Sifakis & Teran 2010); needs the grid
+};
 
 /// Settings of the pressure solve (filled from SolverSettings::pressureTolerance and
 /// maxPressureIterations).
@@ -50,6 +57,24 @@ struct PressureReport {
 };
 
 std::ostream& operator<<(std::ostream& out, const PressureReport& report);
+
+/// What one projection solves (views: the caller keeps the arrays alive during the call).
+struct PressureProblem {
+  /// Signed distance to the liquid surface at cell centres [m], < 0 inside the liquid; size
+  /// grid.cells.
+  const Array3f& liquidPhi;
+  /// Open fraction [0, 1] per axis, size grid.faceCount(axis) (SolidBoundary::faceOpen).
+  const std::array<Array3f, 3>& faceOpen;
+  /// Solid velocity [m/s] per axis (SolidBoundary::faceVelocity; zero arrays for static solids).
+  const std::array<Array3f, 3>& solidVelocity;
+  const GridGeometry& grid;
+  double density = 0.0;  ///< ρ [kg/m³], > 0
+  double dt = 0.0;       ///< Δt [s], > 0
+  /// If given, the divergence [1/s] each liquid cell should have after the projection instead
+  /// of 0 (size grid.cells): divergence control (Kim et al. 2007), used for the particle density
+  /// correction.
+  const Array3f* targetDivergence = nullptr;
+};
 
 /// @brief The pressure projection (Batty, Bertails & Bridson 2007; Bridson 2015, ch. 5).
 ///
@@ -77,22 +102,10 @@ std::ostream& operator<<(std::ostream& out, const PressureReport& report);
 ///       as it does for static or rigidly moving solids.
 class PressureSolver {
  public:
-  /// @param velocity       face velocities [m/s], updated in place
-  /// @param liquidPhi      signed distance to the liquid surface at cell centres [m], < 0 inside
-  ///                       the liquid; size grid.cells
-  /// @param faceOpen       faceOpenFractions(…) [0, 1] per axis, size grid.faceCount(axis)
-  /// @param solidVelocity  solidFaceVelocity(…) [m/s] per axis (zero arrays for static solids)
-  /// @param density        ρ [kg/m³], > 0
-  /// @param dt             Δt [s], > 0
-  /// @param targetDivergence  if given, the divergence [1/s] each liquid cell should have after
-  ///                          the projection instead of 0 (size grid.cells): divergence control
-  ///                          (Kim et al. 2007), used for the particle density correction
+  /// @brief Projects `velocity` (face velocities [m/s], updated in place) as `problem` says.
   /// @throws std::invalid_argument if an array's size does not match the grid, or ρ, Δt or h ≤ 0
-  PressureReport project(MacVelocity& velocity, const Array3f& liquidPhi,
-                         const std::array<Array3f, 3>& faceOpen,
-                         const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,
-                         double density, double dt, const PressureSettings& settings,
-                         const Array3f* targetDivergence = nullptr);
+  PressureReport project(MacVelocity& velocity, const PressureProblem& problem,
+                         const PressureSettings& settings);
 
   /// Cell-centred pressure [Pa] of the last projection, relative to the air (p = 0); 0 in cells
   /// that were not unknowns. Size grid.cells.
@@ -103,19 +116,17 @@ class PressureSolver {
   const std::array<Array3<std::uint8_t>, 3>& validFaces() const { return valid_; }
 
  private:
-  void assemble(const MacVelocity& velocity, const Array3f& liquidPhi,
-                const std::array<Array3f, 3>& faceOpen, const std::array<Array3f, 3>& solidVelocity,
-                const GridGeometry& grid, double density, double dt, const Array3f* targetDivergence);
-  void updateVelocity(MacVelocity& velocity, const Array3f& liquidPhi,
-                      const std::array<Array3f, 3>& faceOpen,
-                      const std::array<Array3f, 3>& solidVelocity, const GridGeometry& grid,
-                      double density, double dt);
+  /// Numbers the unknowns and fills matrix_ and rhs_.
+  void assemble(const MacVelocity& velocity, const PressureProblem& problem);
+  /// The pressure gradient on the open faces next to liquid; valid_.
+  void updateVelocity(MacVelocity& velocity, const PressureProblem& problem);
 
   Array3<std::int32_t> unknownOfCell_;  ///< unknown number per cell, −1 if none
   SevenPointMatrix matrix_;
   std::vector<double> rhs_;
   std::vector<double> solution_;
   PcgSolver pcg_;
+  Mic0Preconditioner mic0_;            ///< rebuilt by every solve that uses it
   MultigridPreconditioner multigrid_;  ///< rebuilt by every solve that uses it
   Array3d pressure_;
   std::array<Array3<std::uint8_t>, 3> valid_;

@@ -42,12 +42,22 @@ void widenAlongRows(std::vector<float>& lo, std::vector<float>& hi, const BlockA
     }
 }
 
+/// Rows of blocks to widen across: `rows` rows of `rowLength` blocks, `rowStride` apart, in each of
+/// `planes` planes `planeStride` apart.
+struct BlockRows {
+  std::size_t rowLength = 0, rowStride = 0;
+  int rows = 0, planes = 0;
+  std::size_t planeStride = 0;
+};
+
 /// The same across rows: each row of blocks becomes the element-wise min (max) of the rows within
-/// `span` of it along y (stride one row) or z (stride one plane); n rows along that axis.
-void widenAcrossRows(std::vector<float>& lo, std::vector<float>& hi, std::size_t rowLength, std::size_t rowStride,
-                     int rows, int planes, std::size_t planeStride, std::vector<float>& scratchLo,
-                     std::vector<float>& scratchHi) {
-  for (int p = 0; p < planes; ++p) {
+/// `span` of it along y (stride one row) or z (stride one plane).
+void widenAcrossRows(std::vector<float>& lo, std::vector<float>& hi, const BlockRows& layout,
+                     std::vector<float>& scratchLo, std::vector<float>& scratchHi) {
+  const std::size_t rowLength = layout.rowLength, rowStride = layout.rowStride,
+                    planeStride = layout.planeStride;
+  const int rows = layout.rows;
+  for (int p = 0; p < layout.planes; ++p) {
     float* const l = &lo[p * planeStride];
     float* const h = &hi[p * planeStride];
     // The original rows of this plane, gathered contiguously.
@@ -82,9 +92,10 @@ void VelocityRange::widen(std::vector<float>& lo, std::vector<float>& hi) {
   const std::size_t plane = static_cast<std::size_t>(bi) * bj;
   widenAlongRows(lo, hi, BlockArrays{bi, bj, bk}, scratchLo_, scratchHi_);
   // Along y: rows of bi blocks, one row apart, within each z-plane.
-  widenAcrossRows(lo, hi, bi, bi, bj, bk, plane, scratchLo_, scratchHi_);
+  widenAcrossRows(lo, hi, BlockRows{std::size_t(bi), std::size_t(bi), bj, bk, plane}, scratchLo_,
+                  scratchHi_);
   // Along z: "rows" of a whole plane, one plane apart.
-  widenAcrossRows(lo, hi, plane, plane, bk, 1, 0, scratchLo_, scratchHi_);
+  widenAcrossRows(lo, hi, BlockRows{plane, plane, bk, 1, 0}, scratchLo_, scratchHi_);
 }
 
 VelocityRange::VelocityRange(const MacVelocity& velocity, const GridGeometry& grid) : grid_(grid) {

@@ -20,13 +20,12 @@ constexpr int kSide = 16;         // cells per side of the closed tank
 constexpr double kLevel = 0.0735; // liquid depth [m]
 constexpr double kRadius = 0.4 * kCell;  // the solver's particle radius at 8 per cell
 
-/// A closed 16³ tank of 1 cm cells, the solids' distance and face fractions, and the particles.
+/// A closed 16³ tank of 1 cm cells, its solid boundary, and the particles.
 struct Tank {
   FluidScene scene;
   GridGeometry grid;
-  Array3f solidNodes, sceneSolidNodes;
   SolidMeshRays noMeshes;
-  std::array<Array3f, 3> faceOpen;
+  SolidBoundary solids;
   Particles particles;
   PressureSolver solver;
 
@@ -36,11 +35,7 @@ struct Tank {
     scene.time.duration = 1.0;
     scene.liquid.push_back({Box{{0, 0, 0}, {kSide * kCell, kLevel, kSide * kCell}}, {}});
     grid = scene.grid();
-    solidNodes = solidNodeDistance(grid, scene.domain, scene.solids, 0.0);
-    Domain open = scene.domain;
-    open.open.fill(true);
-    sceneSolidNodes = solidNodeDistance(grid, open, scene.solids, 0.0);
-    faceOpen = faceOpenFractions(solidNodes, grid);
+    solids = solidBoundaryAt(grid, scene.domain, scene.solids, noMeshes, 0.0);
   }
 
   /// One correction, as the solver makes it once per frame.
@@ -49,9 +44,8 @@ struct Tank {
     const Array3f phi = liquidDistanceFromParticles(particles, index, grid, kRadius);
     PressureSettings settings;
     settings.tolerance = 1e-3;
-    return correctParticleDensity(particles, index, phi, phi, faceOpen, SolidBoundary{solidNodes, noMeshes, 0.0, 0.0},
-                                  sceneSolidNodes, scene.domain,
-                                  grid, 8, solver, settings);
+    return correctParticleDensity(particles, index, DensityCorrectionInput{phi, phi, 8, 0.0},
+                                  solids, solver, settings);
   }
   Array3f density() {
     const CellIndex index = sortParticlesByCell(particles, grid);
@@ -141,7 +135,7 @@ TEST(DensityCorrection, AClumpSpreads) {
 // (measured 0.041), no particle moved by more than 1e-4 cell (the solve's round-off).
 TEST(DensityCorrection, LeavesTheSeededLiquidAtRest) {
   Tank tank;
-  tank.particles = seedLiquid(tank.grid, tank.scene.liquid, tank.solidNodes, 8, 1);
+  tank.particles = seedLiquid(tank.grid, tank.scene.liquid, tank.solids.nodeDistance, 8, 1);
   const std::vector<Vec3f> seeded = tank.particles.position;
   EXPECT_LT(tank.rmsDensityError(), 0.1);
   for (int pass = 0; pass < 5; ++pass) tank.correct();
@@ -160,7 +154,7 @@ TEST(DensityCorrection, SamePositionsForAnyThreadCount) {
     std::vector<Vec3f> out;
     oneapi::tbb::task_arena(threads).execute([&] {
       Tank tank;
-      tank.particles = seedLiquid(tank.grid, tank.scene.liquid, tank.solidNodes, 8, 3);
+      tank.particles = seedLiquid(tank.grid, tank.scene.liquid, tank.solids.nodeDistance, 8, 3);
       tank.correct();
       out = tank.particles.position;
     });

@@ -59,7 +59,8 @@ struct SphereTank {
     settings.tolerance = tolerance;
     settings.maxIterations = 2000;
     settings.preconditioner = preconditioner;
-    return solver.project(u, liquidPhi, faceOpen, solidVelocity, grid, kDensity, kDt, settings);
+    return solver.project(
+        u, PressureProblem{liquidPhi, faceOpen, solidVelocity, grid, kDensity, kDt}, settings);
   }
 };
 

@@ -58,7 +58,12 @@ TEST(ParticleAdvection, AParticleStoppedAtAMeshWallLosesItsAffinePart) {
   const Array3f farFromSolids(g.nodeCount(), 1.0f);
   const Solid wall = thinWall();
   const SolidMeshRays rays(std::span(&wall, 1));
-  advectParticles(p, u, g, SolidBoundary{farFromSolids, rays, 0.0, 0.01}, domain, 0.01);
+  SolidBoundary solids;
+  solids.grid = g;
+  solids.domain = domain;
+  solids.nodeDistance = farFromSolids;
+  solids.meshes = &rays;
+  advectParticles(p, u, solids, SolidTimes{0.0, 0.01}, 0.01);
 
   EXPECT_LT(p.position[0][0], 0.050f);
   EXPECT_GT(p.position[0][0], 0.049f);

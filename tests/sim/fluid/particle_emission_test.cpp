@@ -38,7 +38,7 @@ struct NozzleIntoEmptyGrid {
 
   /// Emits over [t0, t1]; returns the particles appended.
   std::size_t emit(double t0, double t1) {
-    return emitParticles(particles, nozzle, state, t0, t1, grid, 8, noSolid, 1, 0);
+    return emitParticles(particles, nozzle, state, t0, t1, EmissionSetting{grid, noSolid, 8, 1, 0});
   }
 };
 

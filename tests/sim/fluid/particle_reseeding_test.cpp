@@ -48,8 +48,12 @@ struct Fixture {
 
   ReseedingCount reseed(Particles& p, std::uint64_t pass = 1) {
     const CellIndex index = sortParticlesByCell(p, grid);
-    return reseedParticles(p, index, liquidPhi, SolidBoundary{solidNodes, noMeshes, 0.0, 0.0},
-                           velocity, grid, ReseedingLimits{}, 7, pass);
+    SolidBoundary solids;
+    solids.grid = grid;
+    solids.nodeDistance = solidNodes;
+    solids.meshes = &noMeshes;
+    return reseedParticles(p, index, liquidPhi, velocity, solids,
+                           ReseedingPass{ReseedingLimits{}, 7, pass, 0.0});
   }
 };
 

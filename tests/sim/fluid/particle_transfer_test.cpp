@@ -181,9 +181,13 @@ TEST(ParticleAdvection, RigidRotationKeepsRadius) {
   Domain d;
   d.max = {0.32, 0.32, 0.32};
   d.cell = 0.01;
-  const Array3f solidNodes = noSolids(g);
   const SolidMeshRays noMeshes;
-  advectParticles(p, u, g, SolidBoundary{solidNodes, noMeshes, 0.0, 0.05}, d, 0.05);
+  SolidBoundary solids;
+  solids.grid = g;
+  solids.domain = d;
+  solids.nodeDistance = noSolids(g);
+  solids.meshes = &noMeshes;
+  advectParticles(p, u, solids, SolidTimes{0.0, 0.05}, 0.05);
   const double radius = std::hypot(p.position[0][0] - c, p.position[0][1] - c);
   EXPECT_NEAR(radius, 0.08, 1e-3 * 0.08);
   EXPECT_NEAR(std::atan2(p.position[0][1] - c, p.position[0][0] - c), omega * 0.05, 1e-3);

@@ -102,8 +102,10 @@ void randomize(MacVelocity& u, unsigned seed) {
 
 PressureReport project(PressureSolver& solver, MacVelocity& u, const Tank& tank,
                        const PressureSettings& settings = {}) {
-  return solver.project(u, tank.liquidPhi, tank.faceOpen, tank.solidVelocity, tank.grid, kDensity,
-                        kDt, settings);
+  return solver.project(
+      u,
+      PressureProblem{tank.liquidPhi, tank.faceOpen, tank.solidVelocity, tank.grid, kDensity, kDt},
+      settings);
 }
 
 /// One gravity step of a tank at rest, projected: the report, the largest speed on valid faces
@@ -331,11 +333,15 @@ TEST(PressureSolver, RejectsArraysOfTheWrongSize) {
   MacVelocity u = afterGravity(tank.grid);
   Array3f wrongPhi(Index3{8, 8, 7});
   PressureSolver solver;
-  EXPECT_THROW(solver.project(u, wrongPhi, tank.faceOpen, tank.solidVelocity, tank.grid, kDensity,
-                              kDt, PressureSettings{}),
-               std::invalid_argument);
-  EXPECT_THROW(solver.project(u, tank.liquidPhi, tank.faceOpen, tank.solidVelocity, tank.grid,
-                              kDensity, 0.0, PressureSettings{}),
+  EXPECT_THROW(
+      solver.project(
+          u, PressureProblem{wrongPhi, tank.faceOpen, tank.solidVelocity, tank.grid, kDensity, kDt},
+          PressureSettings{}),
+      std::invalid_argument);
+  EXPECT_THROW(solver.project(u,
+                              PressureProblem{tank.liquidPhi, tank.faceOpen, tank.solidVelocity,
+                                              tank.grid, kDensity, 0.0},
+                              PressureSettings{}),
                std::invalid_argument);
 }
 

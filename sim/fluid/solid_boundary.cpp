@@ -1,0 +1,31 @@
+// sim/fluid/solid_boundary.cpp — see solid_boundary.h.
+#include "sim/fluid/solid_boundary.h"
+
+#include "sim/fluid/solid_geometry.h"
+#include "sim/fluid/thin_wall_faces.h"
+
+namespace fluidsound::sim {
+namespace {
+/// The domain with every face open: its solid distance is that of the scene's solids alone.
+Domain withoutWalls(Domain domain) {
+  domain.open.fill(true);
+  return domain;
+}
+}  // namespace
+
+SolidBoundary solidBoundaryAt(const GridGeometry& grid, const Domain& domain,
+                              std::span<const Solid> solids, const SolidMeshRays& meshes,
+                              double time) {
+  SolidBoundary boundary;
+  boundary.grid = grid;
+  boundary.domain = domain;
+  boundary.meshes = &meshes;
+  boundary.nodeDistance = solidNodeDistance(grid, domain, solids, time);
+  boundary.sceneNodeDistance = solidNodeDistance(grid, withoutWalls(domain), solids, time);
+  boundary.faceOpen = faceOpenFractions(boundary.nodeDistance, grid);
+  closeFacesAcrossThinWalls(boundary.faceOpen, boundary.nodeDistance, meshes, grid, time);
+  boundary.faceVelocity = solidFaceVelocity(grid, domain, solids, time);
+  return boundary;
+}
+
+}  // namespace fluidsound::sim
