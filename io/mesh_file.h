@@ -48,7 +48,7 @@ sim::TriangleMesh readMeshFile(const std::filesystem::path& path,
 ///        triangles running along it in opposite directions).
 ///
 ///        Policy. Liquid meshes must be closed: the liquid is the volume inside. Solid meshes
-///        must be closed too, for now: the signed distance (io/mesh_distance.h, OpenVDB's
+///        must be closed too, for now: the signed distance (sim/fluid/mesh_distance.h, OpenVDB's
 ///        flood-filled sign) of a mesh with a hole loses its inside, the outside flooding in
 ///        through the hole (a box missing one triangle has no negative node left; test
 ///        MeshDistance.OpenBoxLosesItsInside), and a silent repair (OpenVDB's unsigned distance

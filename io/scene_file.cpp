@@ -14,12 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "acoustics/synthesis/oscillator_bank.h"
+#include "acoustics/bubble/bubble_track.h"
 #include "io/json_validation.h"
 #include "io/render_limits.h"
 #include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
-#include "sim/fluid/fluid_solver.h"
+#include "sim/fluid/fluid_scene.h"
 
 namespace fluidsound::io {
 namespace {
@@ -293,7 +293,7 @@ class SceneReader {
     }
     if (items->empty())
       check_.fail("listeners", expected + " (omit it for the default)", "an empty array");
-    // One output channel each: the synthesizer renders at most kMaxListeners (oscillator_bank.h),
+    // One output channel each: the synthesizer renders at most kMaxListeners (bubble_track.h),
     // so more must fail here, before the simulation, not in synth after it.
     if (items->size() > static_cast<std::size_t>(acoustics::kMaxListeners))
       check_.fail("listeners", "at most " + std::to_string(acoustics::kMaxListeners) + " listeners (one channel each)",

@@ -38,9 +38,9 @@ sim::Scene readScene(const std::filesystem::path& path);
 /// @brief The scene with another grid cell size: the `--cell` override of `fluidsound simulate`
 ///        and `run` (docs/cli.md), checked by the rules of `domain.cell` (docs/scene.md: > 0,
 ///        each extent a whole number of cells within a relative 10⁻⁶, 2 … 1024 cells per axis).
-///        Call it before io/scene_meshes.h loads the meshes: their node distances are sampled on
-///        scene.grid(), which follows the cell size.
-/// @param scene   a parsed scene (meshes not loaded yet)
+///        Before or after io/scene_meshes.h reads the meshes: the solver computes their
+///        distances on its own grid (sim/fluid/scene_mesh_distances.h).
+/// @param scene   a parsed scene
 /// @param cell    the new cell size [m]
 /// @param source  what the error names in place of the file and JSON path, e.g. "--cell"
 /// @throws InputError with no file and `source` as the field, e.g. `--cell: expected a cell size

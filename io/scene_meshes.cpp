@@ -5,12 +5,9 @@
 #include <memory>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "io/input_error.h"
-#include "io/mesh_distance.h"
 #include "io/mesh_file.h"
-#include "io/region_free_surface.h"
 #include "sim/fluid/solid_geometry.h"
 
 namespace fluidsound::io {
@@ -37,30 +34,24 @@ sim::TriangleMesh placedMesh(sim::TriangleMesh mesh, double scale, const Vec3& r
   return mesh;
 }
 
-/// Reads and checks the mesh `file` names, places it with `place` and fills its distance at the
-/// scene grid's nodes and, for a solid (`withSurface`), its placed triangles; returns them.
+/// Reads and checks the mesh `file` names, places it with `place` and keeps the placed triangles
+/// in the record.
 template <typename Place>
-sim::TriangleMesh loadMesh(sim::MeshFile& file, const Place& place, const sim::Scene& scene,
-                           const std::string& jsonPath, bool withSurface) {
+void loadMesh(sim::MeshFile& file, const Place& place, const sim::Scene& scene,
+              const std::string& jsonPath) {
   const MeshReference reference{scene.file.string(), jsonPath};
   const sim::TriangleMesh mesh = place(readMeshFile(file.file, reference));
   requireClosedMesh(mesh, file.file, reference);
-  auto distance = std::make_shared<sim::MeshNodeDistance>();
-  distance->grid = scene.grid();
-  distance->nodes = meshNodeDistance(mesh, MeshPlacement{}, distance->grid);
-  file.distance = std::move(distance);
-  if (withSurface) file.surface = std::make_shared<const sim::TriangleMesh>(mesh);
-  return mesh;
+  file.surface = std::make_shared<const sim::TriangleMesh>(mesh);
 }
 }  // namespace
 
 void loadSceneMeshes(sim::Scene& scene) {
-  std::vector<std::pair<sim::MeshFile*, sim::TriangleMesh>> regions;
   for (std::size_t i = 0; i < scene.liquid.size(); ++i)
     if (auto* mesh = std::get_if<sim::MeshFile>(&scene.liquid[i].shape))
-      regions.emplace_back(mesh, loadMesh(
-                                     *mesh, [](sim::TriangleMesh m) { return m; }, scene,
-                                     "liquid[" + std::to_string(i) + "].mesh", false));
+      loadMesh(
+          *mesh, [](sim::TriangleMesh m) { return m; }, scene,
+          "liquid[" + std::to_string(i) + "].mesh");
   for (std::size_t i = 0; i < scene.solids.size(); ++i) {
     sim::Solid& solid = scene.solids[i];
     auto* mesh = std::get_if<sim::MeshFile>(&solid.shape);
@@ -68,16 +59,7 @@ void loadSceneMeshes(sim::Scene& scene) {
     const auto place = [&solid](sim::TriangleMesh m) {
       return placedMesh(std::move(m), solid.scale, solid.rotateDegrees, solid.translate);
     };
-    loadMesh(*mesh, place, scene, "solids[" + std::to_string(i) + "].mesh", true);
-  }
-  if (regions.empty()) return;
-  // Where each mesh region's surface is free, against the solids where they start.
-  const sim::Array3f solidNodes =
-      sim::solidNodeDistance(scene.grid(), scene.domain, scene.solids, 0.0);
-  for (auto& [file, mesh] : regions) {
-    auto distance = std::make_shared<sim::MeshNodeDistance>(*file->distance);
-    distance->freeSurfaceAtCentres = regionFreeSurfaceAtCentres(mesh, solidNodes, distance->grid);
-    file->distance = std::move(distance);
+    loadMesh(*mesh, place, scene, "solids[" + std::to_string(i) + "].mesh");
   }
 }
 

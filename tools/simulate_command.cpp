@@ -71,7 +71,7 @@ std::optional<io::Interrupted> stopOf(const FrameWriter& writer, sim::Simulation
 SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  // The cell size is final before the meshes load: their node distances are sampled on its grid.
+  // The meshes are read into the record; the solver computes their distances on its own grid.
   sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   io::loadSceneMeshes(scene);

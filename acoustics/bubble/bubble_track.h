@@ -11,6 +11,11 @@
 
 namespace fluidsound::acoustics {
 
+/// Upper bound on listeners (output channels, TrackSample::transfer values): the synthesizer
+/// renders at most this many in one call (acoustics/synthesis/oscillator_bank.h), so a scene or a
+/// bubbles file with more is refused when it is read.
+inline constexpr int kMaxListeners = 16;
+
 /// One per-frame sample of a bubble's track.
 struct TrackSample {
   double time = 0.0;              ///< t [s]

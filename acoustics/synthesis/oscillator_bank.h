@@ -7,6 +7,7 @@
 
 #include <cstddef>
 
+#include "acoustics/bubble/bubble_track.h"  // kMaxListeners
 #include "acoustics/synthesis/oscillator_kernel.h"
 
 namespace fluidsound::acoustics {
@@ -20,9 +21,6 @@ inline constexpr int kOscillatorLanes = 16;
 /// follow the smooth track within ~0.1 % in frequency for a bubble rising to the surface). Longer
 /// blocks spread the per-bubble cost of each block over more samples.
 inline constexpr int kBlockSamples = 512;
-
-/// Upper bound on listeners (output channels) handled by one call.
-inline constexpr int kMaxListeners = 16;
 
 /// The state of kOscillatorLanes oscillators over one block, structure-of-arrays.
 /// A lane that is unused has zero amplitude and zero gain.

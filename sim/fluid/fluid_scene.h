@@ -31,26 +31,16 @@ struct Sphere {
   bool operator==(const Sphere&) const = default;
 };
 
-/// A mesh's signed distance sampled at the nodes of a grid [m], negative inside, clamped to a
-/// band of a few cells: io fills it when it loads a scene's meshes (io/scene_meshes.h) and the
-/// solver interpolates it (meshDistance in sim/fluid/particle_seeding.h).
-struct MeshNodeDistance {
-  GridGeometry grid;  ///< the nodes are origin + (i, j, k)·cellSize
-  Array3f nodes;      ///< size grid.nodeCount()
-  /// For a liquid region: the signed distance at the cell centres (size grid.cells) to its free
-  /// surface, its faces not lying against a solid (io/region_free_surface.h); empty for a solid.
-  Array3f freeSurfaceAtCentres;
-};
-
-/// A triangle mesh file (OBJ or PLY), path resolved against the scene file's folder.
+/// A triangle mesh file (OBJ or PLY), path resolved against the scene file's folder, and once
+/// read (io::loadSceneMeshes) its triangles placed in the scene. The solver computes the
+/// distances it needs from them on its own grid (sim/fluid/scene_mesh_distances.h).
 struct MeshFile {
   std::filesystem::path file;
-  /// The mesh placed by its solid's scale and translation (not its path), once loaded.
-  std::shared_ptr<const MeshNodeDistance> distance{};
-  /// The triangles placed the same way [m] (solids only, once loaded): what the ray queries
-  /// against thin walls use (sim/fluid/solid_mesh_rays.h).
+  /// The triangles [m], once read: a liquid region's as written, a solid's placed by its scale,
+  /// rotation and translation (not its path). The solver's mesh distance and the ray queries
+  /// against thin walls (sim/fluid/solid_mesh_rays.h) read them.
   std::shared_ptr<const TriangleMesh> surface{};
-  /// Two references are equal when they name the same file (the distance follows from it).
+  /// Two references are equal when they name the same file (the triangles follow from it).
   bool operator==(const MeshFile& other) const { return file == other.file; }
 };
 
@@ -130,6 +120,12 @@ struct SolverSettings {
   SurfaceMethod surface = SurfaceMethod::LevelSet;
   bool operator==(const SolverSettings&) const = default;
 };
+
+/// Substeps one frame may take (docs/scene.md, "Substeps"): a scene whose fastest possible speed
+/// needs more is refused when it is read (io/scene_file.cpp), and FluidSolver::advanceTo stops a
+/// frame that reaches it (a CFL of 1e-12 or an emitter at 10⁶ m/s would make a frame that never
+/// ends). A rule of the scene, so it lives with the record.
+inline constexpr int kMaxSubstepsPerFrame = 10000;
 
 /// What the liquid solver reads of a scene.
 struct FluidScene {

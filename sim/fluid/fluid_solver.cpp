@@ -133,39 +133,22 @@ struct FluidSolver::Workspace {
   FaceMask reached;                     ///< faces particles reached (P2G weight > 0)
   PressureSolver pressure;
   SolidMeshRays meshWalls;              ///< ray queries against the mesh solids (thin walls)
+  SceneMeshDistances meshes;            ///< the mesh solids' and regions' distances on the grid
   std::vector<EmitterState> emitters;   ///< one per scene emitter
   bool solidsMove = false;
 };
 
-namespace {
-/// A mesh's node distance must be sampled on the solver's own grid: one loaded before a change of
-/// the cell size (`--cell`) would be read, silently, at the old resolution.
-void requireMeshesOnGrid(const FluidScene& scene, const GridGeometry& grid) {
-  const auto check = [&grid](const Shape& shape) {
-    const auto* mesh = std::get_if<MeshFile>(&shape);
-    if (mesh == nullptr || !mesh->distance) return;  // unloaded: reported where it is read
-    const GridGeometry& g = mesh->distance->grid;
-    if (g.cells != grid.cells || g.cellSize != grid.cellSize || g.origin != grid.origin)
-      throw std::invalid_argument(mesh->file.string() +
-                                  ": the mesh's distance was sampled on another grid (cell " +
-                                  std::to_string(g.cellSize) + " m, the scene's " +
-                                  std::to_string(grid.cellSize) +
-                                  " m): load the meshes after the cell size is final");
-  };
-  for (const LiquidRegion& region : scene.liquid) check(region.shape);
-  for (const Solid& solid : scene.solids) check(solid.shape);
-}
-}  // namespace
-
 FluidSolver::FluidSolver(const FluidScene& scene, FluidProperties properties)
     : scene_(scene), properties_(properties), grid_(scene.grid()), work_(std::make_unique<Workspace>()) {
-  requireMeshesOnGrid(scene, grid_);
+  work_->meshes = sceneMeshDistances(scene, grid_);
   work_->emitters.resize(scene.emitters.size());
   for (const Solid& s : scene.solids) work_->solidsMove = work_->solidsMove || !s.path.empty();
   work_->meshWalls = SolidMeshRays(scene.solids);
-  work_->solids = solidBoundaryAt(grid_, scene.domain, scene.solids, work_->meshWalls, 0.0);
+  work_->solids =
+      solidBoundaryAt(grid_, scene.domain, scene.solids, work_->meshWalls, 0.0, work_->meshes.solids);
   const int perCell = scene.solver.particlesPerCell;
-  particles_ = seedLiquid(grid_, scene.liquid, work_->solids.nodeDistance, perCell, scene.seed);
+  particles_ = seedLiquid(grid_, scene.liquid, work_->solids.nodeDistance, perCell, scene.seed,
+                          work_->meshes.liquid);
   assignParticleIds(particles_.id, nextParticleId_);
   // 0.8 × the mean particle spacing h/∛n: centres the Zhu–Bridson surface of a seeded layer on
   // the layer's top (measured in tests/sim/fluid/particle_transfer_test.cpp).
@@ -176,7 +159,7 @@ FluidSolver::FluidSolver(const FluidScene& scene, FluidProperties properties)
   particlesToGrid(particles_, grid_, scene.solver.transfer, velocity_, work_->weight, work_->transfer);
   liquidPhi_ = surfaceFromParticles(index);
   if (usesLevelSet()) {
-    levelSet_ = LiquidLevelSet(scene, grid_, work_->solids.nodeDistance);
+    levelSet_ = LiquidLevelSet(scene, grid_, work_->solids.nodeDistance, work_->meshes.liquid);
     levelSet_.holdToParticles(liquidPhi_, index, velocity_, work_->solids.sceneNodeDistance,
                               levelSetHold());
     liquidPhi_ = levelSet_.phi();
@@ -345,7 +328,8 @@ FrameStats FluidSolver::advanceTo(double until, const SubstepObserver& observer)
 void FluidSolver::placeSolidsAndEmit(double dt, FrameStats& stats) {
   Workspace& w = *work_;
   if (w.solidsMove)
-    w.solids = solidBoundaryAt(grid_, scene_.domain, scene_.solids, w.meshWalls, time_ + dt);
+    w.solids = solidBoundaryAt(grid_, scene_.domain, scene_.solids, w.meshWalls, time_ + dt,
+                               w.meshes.solids);
   for (std::size_t e = 0; e < scene_.emitters.size(); ++e)
     stats.particlesEmitted +=
         emitParticles(particles_, scene_.emitters[e], w.emitters[e], time_, time_ + dt,

@@ -62,11 +62,6 @@ struct FluidProperties {
   double density = 998.0;  ///< ρ [kg/m³], water at 20 °C
 };
 
-/// Substeps one frame may take (docs/scene.md, "Substeps"): a scene whose fastest possible speed
-/// needs more is refused when it is read (io/scene_file.cpp), and advanceTo stops a frame that
-/// reaches it (a CFL of 1e-12 or an emitter at 10⁶ m/s would make a frame that never ends).
-inline constexpr int kMaxSubstepsPerFrame = 10000;
-
 /// @brief A frame needed more than its substep limit. what() is one line with the time step and
 ///        the speeds that set it; likelyFields() names the scene fields to look at.
 class SubstepLimitError : public std::runtime_error {
@@ -85,8 +80,9 @@ using SubstepObserver = std::function<void(const LiquidState& liquid, double t, 
 
 class FluidSolver {
  public:
-  /// @brief Sets up the grid, solids and initial particles of a validated scene.
-  /// @throws std::invalid_argument for a mesh whose distance was not loaded (io::loadSceneMeshes)
+  /// @brief Sets up the grid, the mesh distances on it (sim/fluid/scene_mesh_distances.h), the
+  ///        solids and the initial particles of a validated scene.
+  /// @throws std::invalid_argument for a mesh whose triangles were not read (io::loadSceneMeshes)
   explicit FluidSolver(const FluidScene& scene, FluidProperties properties = {});
   ~FluidSolver();
   FluidSolver(const FluidSolver&) = delete;

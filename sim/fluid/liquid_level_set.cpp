@@ -61,17 +61,16 @@ double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes,
   return -depth;
 }
 
-/// The signed distance [m] from the centre of cell (i, j, k) to the free faces of region r.
-double freeRegionDistance(const LiquidRegion& r, int i, int j, int k, const Array3f& solidNodes,
-                          const GridGeometry& grid) {
+/// The signed distance [m] from the centre of cell (i, j, k) to the free faces of region r
+/// (`mesh`: its node distance when it is a mesh, else null).
+double freeRegionDistance(const LiquidRegion& r, const MeshNodeDistance* mesh, int i, int j, int k,
+                          const Array3f& solidNodes, const GridGeometry& grid) {
   const Vec3 x = grid.cellCentre(i, j, k);
   if (const auto* box = std::get_if<Box>(&r.shape))
     return freeBoxDistance(*box, x, solidNodes, grid);
-  if (const auto* mesh = std::get_if<MeshFile>(&r.shape);
-      mesh != nullptr && mesh->distance &&
-      mesh->distance->freeSurfaceAtCentres.size() == grid.cells)
-    return mesh->distance->freeSurfaceAtCentres(i, j, k);
-  return regionDistance(r, x);
+  if (mesh != nullptr && mesh->freeSurfaceAtCentres.size() == grid.cells)
+    return mesh->freeSurfaceAtCentres(i, j, k);
+  return regionDistance(r, x, mesh);
 }
 }  // namespace
 
@@ -81,16 +80,21 @@ double liquidVolumeOutsideSolids(const Array3f& phi, const Array3f& sceneSolidNo
 }
 
 LiquidLevelSet::LiquidLevelSet(const FluidScene& scene, const GridGeometry& grid,
-                               const Array3f& solidNodes)
+                               const Array3f& solidNodes,
+                               std::span<const MeshNodeDistance> regionMeshes)
     : grid_(grid), phi_(grid.cells, static_cast<float>(kFarCells * grid.cellSize)) {
   if (scene.liquid.empty()) return;
+  std::vector<const MeshNodeDistance*> meshes;
+  for (std::size_t r = 0; r < scene.liquid.size(); ++r)
+    meshes.push_back(meshEntry(scene.liquid[r].shape, regionMeshes, r));
   tbb::parallel_for(0, grid.cells[2], [&](int k) {
     for (int j = 0; j < grid.cells[1]; ++j)
       for (int i = 0; i < grid.cells[0]; ++i) {
         const Vec3 x = grid.cellCentre(i, j, k);
         double region = kFarCells * grid.cellSize;
-        for (const LiquidRegion& r : scene.liquid)
-          region = std::min(region, freeRegionDistance(r, i, j, k, solidNodes, grid));
+        for (std::size_t r = 0; r < scene.liquid.size(); ++r)
+          region = std::min(
+              region, freeRegionDistance(scene.liquid[r], meshes[r], i, j, k, solidNodes, grid));
         // Inside a solid: air (the solid's own depth), the solid holds no liquid.
         const double solid = interpolateNodes(solidNodes, grid, x);
         phi_(i, j, k) = static_cast<float>(solid < 0.0 ? std::max(region, -solid) : region);

@@ -14,11 +14,14 @@
 // none does.
 #pragma once
 
+#include <span>
+
 #include "sim/fluid/array3.h"
+#include "sim/fluid/fluid_scene.h"
 #include "sim/fluid/grid.h"
 #include "sim/fluid/mac_velocity.h"
 #include "sim/fluid/particle_transfer.h"
-#include "sim/fluid/fluid_scene.h"
+#include "sim/fluid/scene_mesh_distances.h"
 
 namespace fluidsound::sim {
 
@@ -41,9 +44,13 @@ class LiquidLevelSet {
   ///        free faces, those not lying against a solid or a domain wall (kSolidContactCells;
   ///        water filled up to a tank's walls is y − H deep at the walls too); inside a solid,
   ///        the solid's depth (air: the solid holds no liquid). A mesh region reads
-  ///        MeshNodeDistance::freeSurfaceAtCentres (io/region_free_surface.h) when loaded.
-  /// @param solidNodes  the solids' signed distance at the nodes, domain walls included [m]
-  LiquidLevelSet(const FluidScene& scene, const GridGeometry& grid, const Array3f& solidNodes);
+  ///        MeshNodeDistance::freeSurfaceAtCentres (sim/fluid/region_free_surface.h).
+  /// @param solidNodes    the solids' signed distance at the nodes, domain walls included [m]
+  /// @param regionMeshes  the mesh regions' distances on `grid` (SceneMeshDistances::liquid), one
+  ///                      entry per region; may be empty when no region is a mesh
+  /// @throws std::invalid_argument for a mesh region whose distance regionMeshes does not hold
+  LiquidLevelSet(const FluidScene& scene, const GridGeometry& grid, const Array3f& solidNodes,
+                 std::span<const MeshNodeDistance> regionMeshes = {});
 
   /// @brief Holds φ to the particle surface (see the file comment).
   /// @param particlePhi  the particle surface at cell centres (liquidDistanceFromParticles) [m]

@@ -1,12 +1,13 @@
 // sim/fluid/particle_seeding.cpp — see particle_seeding.h.
 #include "sim/fluid/particle_seeding.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
-
-#include <tbb/parallel_for.h>
+#include <vector>
 
 #include "sim/fluid/random_stream.h"
 
@@ -27,19 +28,20 @@ double boxDistance(const Box& b, const Vec3& p) {
 
 }  // namespace
 
-double regionDistance(const LiquidRegion& region, const Vec3& p) {
+double regionDistance(const LiquidRegion& region, const Vec3& p, const MeshNodeDistance* mesh) {
   if (const auto* b = std::get_if<Box>(&region.shape)) return boxDistance(*b, p);
   if (const auto* s = std::get_if<Sphere>(&region.shape)) {
     const double dx = p[0] - s->center[0], dy = p[1] - s->center[1], dz = p[2] - s->center[2];
     return std::sqrt(dx * dx + dy * dy + dz * dz) - s->radius;
   }
-  return meshDistance(std::get<MeshFile>(region.shape), p);
+  if (mesh == nullptr)
+    throw std::invalid_argument(std::get<MeshFile>(region.shape).file.string() +
+                                ": the mesh's distance was not computed (sim::sceneMeshDistances)");
+  return meshDistance(*mesh, p);
 }
 
-double meshDistance(const MeshFile& mesh, const Vec3& p) {
-  if (!mesh.distance)
-    throw std::invalid_argument(mesh.file.string() + ": the mesh's distance was not loaded (io::loadSceneMeshes)");
-  return interpolateNodes(mesh.distance->nodes, mesh.distance->grid, p);
+double meshDistance(const MeshNodeDistance& mesh, const Vec3& p) {
+  return interpolateNodes(mesh.nodes, mesh.grid, p);
 }
 
 float interpolateNodes(const Array3f& nodes, const GridGeometry& grid, const Vec3& p) {
@@ -73,7 +75,11 @@ constexpr double kStratumJitter = 0.5;
 }  // namespace
 
 Particles seedLiquid(const GridGeometry& grid, std::span<const LiquidRegion> regions,
-                     const Array3f& solidNodeDistance, int perCell, std::uint64_t seed) {
+                     const Array3f& solidNodeDistance, int perCell, std::uint64_t seed,
+                     std::span<const MeshNodeDistance> regionMeshes) {
+  std::vector<const MeshNodeDistance*> meshes;
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    meshes.push_back(meshEntry(regions[r].shape, regionMeshes, r));
   const int ni = grid.cells[0], nj = grid.cells[1], nk = grid.cells[2];
   const int strata = static_cast<int>(std::lround(std::cbrt(perCell)));
   // Each cell seeds into its own slot; slots are concatenated in cell order (deterministic).
@@ -95,8 +101,9 @@ Particles seedLiquid(const GridGeometry& grid, std::span<const LiquidRegion> reg
           }
           const Vec3 p = grid.worldFromGrid({i + local[0], j + local[1], k + local[2]});
           if (interpolateNodes(solidNodeDistance, grid, p) <= 0.0f) continue;
-          for (const LiquidRegion& r : regions) {
-            if (regionDistance(r, p) < 0.0) {
+          for (std::size_t n = 0; n < regions.size(); ++n) {
+            const LiquidRegion& r = regions[n];
+            if (regionDistance(r, p, meshes[n]) < 0.0) {
               out.push({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])},
                        {static_cast<float>(r.velocity[0]), static_cast<float>(r.velocity[1]),
                         static_cast<float>(r.velocity[2])});

@@ -15,16 +15,16 @@ Domain withoutWalls(Domain domain) {
 
 SolidBoundary solidBoundaryAt(const GridGeometry& grid, const Domain& domain,
                               std::span<const Solid> solids, const SolidMeshRays& meshes,
-                              double time) {
+                              double time, std::span<const MeshNodeDistance> solidMeshes) {
   SolidBoundary boundary;
   boundary.grid = grid;
   boundary.domain = domain;
   boundary.meshes = &meshes;
-  boundary.nodeDistance = solidNodeDistance(grid, domain, solids, time);
-  boundary.sceneNodeDistance = solidNodeDistance(grid, withoutWalls(domain), solids, time);
+  boundary.nodeDistance = solidNodeDistance(grid, domain, solids, time, solidMeshes);
+  boundary.sceneNodeDistance = solidNodeDistance(grid, withoutWalls(domain), solids, time, solidMeshes);
   boundary.faceOpen = faceOpenFractions(boundary.nodeDistance, grid);
   closeFacesAcrossThinWalls(boundary.faceOpen, boundary.nodeDistance, meshes, grid, time);
-  boundary.faceVelocity = solidFaceVelocity(grid, domain, solids, time);
+  boundary.faceVelocity = solidFaceVelocity(grid, domain, solids, time, solidMeshes);
   return boundary;
 }
 

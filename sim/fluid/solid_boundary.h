@@ -10,6 +10,7 @@
 #include "sim/fluid/array3.h"
 #include "sim/fluid/fluid_scene.h"
 #include "sim/fluid/grid.h"
+#include "sim/fluid/scene_mesh_distances.h"
 #include "sim/fluid/solid_mesh_rays.h"
 
 namespace fluidsound::sim {
@@ -42,10 +43,12 @@ struct SolidTimes {
 /// @brief The solid boundary at `time` [s]: solidNodeDistance with and without the domain walls,
 ///        faceOpenFractions of the former with the faces across thin mesh walls closed
 ///        (closeFacesAcrossThinWalls), solidFaceVelocity.
-/// @param meshes  SolidMeshRays of `solids`; must outlive the result (it keeps a pointer)
-/// @throws std::invalid_argument for a MeshFile solid whose distance was not loaded
+/// @param meshes       SolidMeshRays of `solids`; must outlive the result (it keeps a pointer)
+/// @param solidMeshes  the mesh solids' node distances on `grid` (SceneMeshDistances::solids);
+///                     may be empty when no solid is a mesh
+/// @throws std::invalid_argument for a MeshFile solid whose distance solidMeshes does not hold
 SolidBoundary solidBoundaryAt(const GridGeometry& grid, const Domain& domain,
                               std::span<const Solid> solids, const SolidMeshRays& meshes,
-                              double time);
+                              double time, std::span<const MeshNodeDistance> solidMeshes = {});
 
 }  // namespace fluidsound::sim

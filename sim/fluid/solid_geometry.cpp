@@ -67,7 +67,8 @@ struct PlacedSolid {
   double radius = 0.0;    ///< sphere radius [m]
   Vec3 velocity{};        ///< [m/s]
 
-  const MeshFile* mesh = nullptr;  ///< a loaded mesh (centre = its path translation), else null
+  const MeshNodeDistance* mesh =
+      nullptr;  ///< a mesh's distance (centre = its path translation), else null
 
   double distance(const Vec3& p) const {
     const Vec3 d{p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
@@ -85,16 +86,16 @@ struct PlacedSolid {
   }
 };
 
-std::vector<PlacedSolid> placeSolids(std::span<const Solid> solids, double time) {
+std::vector<PlacedSolid> placeSolids(std::span<const Solid> solids, double time,
+                                     std::span<const MeshNodeDistance> solidMeshes) {
   std::vector<PlacedSolid> placed;
   placed.reserve(solids.size());
-  for (const Solid& solid : solids) {
+  for (std::size_t n = 0; n < solids.size(); ++n) {
+    const Solid& solid = solids[n];
     const Vec3 path = pathTranslation(solid.path, time);
     PlacedSolid s;
     s.velocity = pathVelocity(solid.path, time);
-    if (const MeshFile* mesh = std::get_if<MeshFile>(&solid.shape)) {
-      if (!mesh->distance)
-        throw std::invalid_argument(mesh->file.string() + ": the mesh's distance was not loaded (io::loadSceneMeshes)");
+    if (const MeshNodeDistance* mesh = meshEntry(solid.shape, solidMeshes, n)) {
       s.mesh = mesh;
       s.centre = path;  // the mesh is placed by scale and translation already; the path shifts it
     } else if (const Box* box = std::get_if<Box>(&solid.shape)) {
@@ -179,8 +180,9 @@ Vec3 pathVelocity(const std::vector<PathKey>& path, double time) {
 }
 
 Array3f solidNodeDistance(const GridGeometry& grid, const Domain& domain,
-                          std::span<const Solid> solids, double time) {
-  const std::vector<PlacedSolid> placed = placeSolids(solids, time);
+                          std::span<const Solid> solids, double time,
+                          std::span<const MeshNodeDistance> solidMeshes) {
+  const std::vector<PlacedSolid> placed = placeSolids(solids, time, solidMeshes);
   const Walls walls(grid, domain);
   const double snap = kSolidSnapFraction * grid.cellSize;
   // Far from every solid (no closed wall, no solid): a large positive value, not +∞, so that
@@ -246,8 +248,9 @@ std::array<Array3f, 3> faceOpenFractions(const Array3f& solidNodeDistance,
 }
 
 std::array<Array3f, 3> solidFaceVelocity(const GridGeometry& grid, const Domain& domain,
-                                         std::span<const Solid> solids, double time) {
-  const std::vector<PlacedSolid> placed = placeSolids(solids, time);
+                                         std::span<const Solid> solids, double time,
+                                         std::span<const MeshNodeDistance> solidMeshes) {
+  const std::vector<PlacedSolid> placed = placeSolids(solids, time, solidMeshes);
   std::array<Array3f, 3> velocity{Array3f(grid.faceCount(0)), Array3f(grid.faceCount(1)),
                                   Array3f(grid.faceCount(2))};
   const bool anyMoving = std::any_of(placed.begin(), placed.end(), [](const PlacedSolid& s) {

@@ -8,8 +8,9 @@
 #include <vector>
 
 #include "sim/fluid/array3.h"
-#include "sim/fluid/grid.h"
 #include "sim/fluid/fluid_scene.h"
+#include "sim/fluid/grid.h"
+#include "sim/fluid/scene_mesh_distances.h"
 
 namespace fluidsound::sim {
 
@@ -29,16 +30,21 @@ inline constexpr double kSolidSnapFraction = 1e-6;
 ///        - boxes: exact signed distance of the oriented box: scaled about the world origin,
 ///          rotated by rotateDegrees (about x, then y, then z: R = Rz·Ry·Rx) about the scaled
 ///          box's centre, translated by translate plus the path translation at `time`;
-///        - spheres: exact; centre scaled about the origin, radius scaled, then translated.
+///        - spheres: exact; centre scaled about the origin, radius scaled, then translated;
+///        - meshes: their node distance (solidMeshes) interpolated at the node moved back by the
+///          path translation at `time`.
 ///        Values within kSolidSnapFraction·h of zero are set to 0.
 /// @param grid    node positions: origin + (i, j, k)·cellSize, i = 0 … ni
 /// @param domain  closed faces become walls
 /// @param solids  static or kinematic solids (Solid::path)
 /// @param time    [s], the time at which kinematic solids are placed
 /// @return Array3f of size grid.nodeCount(), [m]
-/// @throws std::invalid_argument for a MeshFile solid whose distance was not loaded
+/// @param solidMeshes  the mesh solids' node distances on `grid`, one entry per solid
+///                     (SceneMeshDistances::solids); may be empty when no solid is a mesh
+/// @throws std::invalid_argument for a MeshFile solid whose distance solidMeshes does not hold
 Array3f solidNodeDistance(const GridGeometry& grid, const Domain& domain,
-                          std::span<const Solid> solids, double time);
+                          std::span<const Solid> solids, double time,
+                          std::span<const MeshNodeDistance> solidMeshes = {});
 
 /// @brief The solid distance at the centre of cell (i, j, k) [m]: the mean of its 8 nodal
 ///        distances, summed in float in corner order. A cell whose value is < 0 has its centre
@@ -91,8 +97,10 @@ Vec3 pathVelocity(const std::vector<PathKey>& path, double time);
 ///        distances as solidNodeDistance; domain walls and solids without a path are at rest.
 ///        Used by the pressure projection as u_solid on the covered part (1 − weight) of a face.
 /// @return per axis an Array3f of size grid.faceCount(axis) [m/s]; all zero when no solid moves
-/// @throws std::invalid_argument for a MeshFile solid whose distance was not loaded
+/// @param solidMeshes  as solidNodeDistance
+/// @throws std::invalid_argument for a MeshFile solid whose distance solidMeshes does not hold
 std::array<Array3f, 3> solidFaceVelocity(const GridGeometry& grid, const Domain& domain,
-                                         std::span<const Solid> solids, double time);
+                                         std::span<const Solid> solids, double time,
+                                         std::span<const MeshNodeDistance> solidMeshes = {});
 
 }  // namespace fluidsound::sim

@@ -1,8 +1,8 @@
-// sim/fluid/solid_mesh_rays.h — ray queries against the scene's mesh solids (Embree), so that liquid
-// never crosses a solid wall thinner than a grid cell: the nodal signed distance the pressure
-// solve uses cannot see a 2 mm glass wall in 5 mm cells (io/mesh_distance.h, "Thin features"),
-// but a ray along each particle's move finds it whatever its thickness (docs/solver.md, "Thin
-// walls").
+// sim/fluid/solid_mesh_rays.h — ray queries against the scene's mesh solids (Embree), so that
+// liquid never crosses a solid wall thinner than a grid cell: the nodal signed distance the
+// pressure solve uses cannot see a 2 mm glass wall in 5 mm cells (sim/fluid/mesh_distance.h, "Thin
+// features"), but a ray along each particle's move finds it whatever its thickness (docs/solver.md,
+// "Thin walls").
 #pragma once
 
 #include <memory>

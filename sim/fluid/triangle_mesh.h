@@ -13,7 +13,7 @@ namespace fluidsound::sim {
 /// @note  Valid meshes (io::readMeshFile) have at least one triangle, finite vertices and every
 ///        index < vertices.size(). Vertices no triangle uses may be present. A closed mesh
 ///        (meshClosedness, sim/fluid/mesh_closedness.h) is oriented outward or inward alike: the
-///        distance code (io/mesh_distance.h) does not depend on the orientation.
+///        distance code (sim/fluid/mesh_distance.h) does not depend on the orientation.
 struct TriangleMesh {
   std::vector<std::array<float, 3>> vertices;           ///< positions [file units, m for scenes]
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< 0-based indices into vertices

@@ -46,8 +46,8 @@ TEST(ExampleScenes, EverySceneParsesAndLoadsItsMeshes) {
     ASSERT_NO_THROW(loadSceneMeshes(scene));
     for (const sim::Solid& solid : scene.solids)
       if (const auto* mesh = std::get_if<sim::MeshFile>(&solid.shape)) {
-        ASSERT_TRUE(mesh->distance);
-        EXPECT_EQ(mesh->distance->grid.cellSize, scene.grid().cellSize);
+        ASSERT_TRUE(mesh->surface);
+        EXPECT_FALSE(mesh->surface->triangles.empty());
       }
     ASSERT_EQ(scene.listeners.size(), 2u);
     EXPECT_EQ(scene.listeners[0].name, "left");

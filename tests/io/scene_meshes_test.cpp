@@ -1,4 +1,5 @@
-// Tests of io/scene_meshes.h: a scene's meshes loaded into the signed distances the solver reads.
+// Tests of io/scene_meshes.h: a scene's meshes read and placed into the scene record, and the
+// solver's distances from them (sim/fluid/scene_mesh_distances.h) standing where the primitives do.
 #include "io/scene_meshes.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include "io/input_error.h"
 #include "sim/fluid/fluid_solver.h"
 #include "sim/fluid/particle_seeding.h"
+#include "sim/fluid/scene_mesh_distances.h"
 #include "sim/fluid/solid_geometry.h"
 #include "support/input_error_expectations.h"
 #include "support/temp_folder.h"
@@ -47,7 +49,9 @@ TEST(SceneMeshes, MeshBoxSolidEqualsThePrimitiveBox) {
   sim::Solid box;
   box.shape = sim::Box{{0.043, 0.0, 0.021}, {0.143, 0.08, 0.081}};
   const sim::GridGeometry grid = scene.grid();
-  const sim::Array3f fromMesh = sim::solidNodeDistance(grid, scene.domain, scene.solids, 0.0);
+  const sim::SceneMeshDistances meshes = sim::sceneMeshDistances(scene, grid);
+  const sim::Array3f fromMesh =
+      sim::solidNodeDistance(grid, scene.domain, scene.solids, 0.0, meshes.solids);
   const sim::Array3f fromBox = sim::solidNodeDistance(grid, scene.domain, std::span(&box, 1), 0.0);
   int compared = 0;
   for (std::size_t n = 0; n < fromBox.values().size(); ++n)
@@ -79,7 +83,9 @@ TEST(SceneMeshes, RotatedMeshBoxSolidEqualsTheRotatedPrimitiveBox) {
   sim::Solid box = mesh;
   box.shape = sim::Box{{0.0, 0.0, 0.0}, {0.05, 0.04, 0.03}};
   const sim::GridGeometry grid = scene.grid();
-  const sim::Array3f fromMesh = sim::solidNodeDistance(grid, scene.domain, scene.solids, 0.0);
+  const sim::SceneMeshDistances meshes = sim::sceneMeshDistances(scene, grid);
+  const sim::Array3f fromMesh =
+      sim::solidNodeDistance(grid, scene.domain, scene.solids, 0.0, meshes.solids);
   const sim::Array3f fromBox = sim::solidNodeDistance(grid, scene.domain, std::span(&box, 1), 0.0);
   int compared = 0;
   for (std::size_t n = 0; n < fromBox.values().size(); ++n)
@@ -107,7 +113,9 @@ TEST(SceneMeshes, MeshLiquidRegionSeedsLikeTheBox) {
   const sim::GridGeometry grid = scene.grid();
   const sim::Array3f solid = sim::solidNodeDistance(grid, scene.domain, scene.solids, 0.0);
   const std::vector<sim::LiquidRegion> box{{sim::Box{{0, 0, 0}, {0.05, 0.04, 0.03}}, {}}};
-  const std::size_t fromMesh = sim::seedLiquid(grid, scene.liquid, solid, 8, 7).size();
+  const sim::SceneMeshDistances meshes = sim::sceneMeshDistances(scene, grid);
+  const std::size_t fromMesh =
+      sim::seedLiquid(grid, scene.liquid, solid, 8, 7, meshes.liquid).size();
   const std::size_t fromBox = sim::seedLiquid(grid, box, solid, 8, 7).size();
   EXPECT_NEAR(static_cast<double>(fromMesh), static_cast<double>(fromBox), 0.001 * fromBox);
   EXPECT_NEAR(static_cast<double>(fromBox), 5 * 4 * 3 * 8, 0.05 * 480) << "the box holds 60 cells";
@@ -127,18 +135,19 @@ TEST(SceneMeshes, PathShiftsAMeshSolid) {
   scene.solids.push_back(mesh);
   loadSceneMeshes(scene);
   const Vec3 shift{0.025, 0.01, 0.0};  // at t = 0.5
-  sim::Scene still = scene;
-  still.solids[0].path.clear();
-  const sim::Array3f moved = sim::solidNodeDistance(scene.grid(), sim::Domain{scene.domain.min, scene.domain.max,
-                                                    kCell, {true, true, true, true, true, true}}, scene.solids, 0.5);
-  int compared = 0;
   const sim::GridGeometry grid = scene.grid();
+  const sim::SceneMeshDistances meshes = sim::sceneMeshDistances(scene, grid);
+  const sim::Array3f moved = sim::solidNodeDistance(
+      grid,
+      sim::Domain{scene.domain.min, scene.domain.max, kCell, {true, true, true, true, true, true}},
+      scene.solids, 0.5, meshes.solids);
+  int compared = 0;
   for (int k = 0; k <= grid.cells[2]; ++k)
     for (int j = 0; j <= grid.cells[1]; ++j)
       for (int i = 0; i <= grid.cells[0]; ++i) {
         const Vec3 p = grid.worldFromGrid({double(i), double(j), double(k)});
         const Vec3 back{p[0] - shift[0], p[1] - shift[1], p[2] - shift[2]};
-        const double expected = sim::meshDistance(std::get<sim::MeshFile>(still.solids[0].shape), back);
+        const double expected = sim::meshDistance(meshes.solids[0], back);  // the static field
         if (std::abs(expected) < 0.5 * kCell || std::abs(expected) > 1.2 * kCell) continue;
         ASSERT_NEAR(moved(i, j, k), expected, 1e-4 * kCell);
         ++compared;
@@ -163,7 +172,7 @@ TEST(SceneMeshes, LiquidFlowsAroundAMeshObstacle) {
   const sim::FrameStats stats = solver.advanceTo(0.4);
   EXPECT_TRUE(stats.pressureConverged);
   EXPECT_LT(stats.maxDivergence, 1e-4);
-  const sim::MeshFile& obstacle = std::get<sim::MeshFile>(scene.solids[0].shape);
+  const sim::MeshNodeDistance obstacle = sim::sceneMeshDistances(scene, solver.grid()).solids[0];
   for (const sim::Vec3f& x : solver.particles().position)
     ASSERT_GT(sim::meshDistance(obstacle, {x[0], x[1], x[2]}), -0.1 * kCell);
 }

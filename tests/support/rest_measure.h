@@ -9,6 +9,7 @@
 
 #include "sim/fluid/fluid_solver.h"
 #include "sim/fluid/particle_seeding.h"
+#include "sim/fluid/scene_mesh_distances.h"
 #include "sim/fluid/solid_geometry.h"
 
 namespace fluidsound::test {
@@ -34,7 +35,8 @@ inline RestMeasure restAfter(sim::FluidScene scene, double seconds) {
   const sim::GridGeometry& g = solver.grid();
   sim::Domain noWalls = scene.domain;
   noWalls.open.fill(true);
-  const sim::Array3f solids = sim::solidNodeDistance(g, noWalls, scene.solids, solver.time());
+  const sim::Array3f solids = sim::solidNodeDistance(g, noWalls, scene.solids, solver.time(),
+                                                     sim::sceneMeshDistances(scene, g).solids);
   RestMeasure m;
   m.maxSpeed = stats.maxSpeed;
   double lowest = 1e9, highest = -1e9;

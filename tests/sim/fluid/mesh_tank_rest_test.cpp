@@ -36,9 +36,9 @@ void expectAtRest(const std::string& name) {
 // after 2 s the fastest particle moves at < 1 mm/s and the surface height varies by < 0.1 cell.
 // scenes/still_basin: the basin mesh with its water as a mesh region whose sides and bottom lie
 // on the basin's walls, all on cell planes. Before the level set started from the region's free
-// faces only (io/region_free_surface.h), those faces read the wall cells ¼–⅜ cell shallow and
-// the water moved at 4.9 mm/s after 2 s. Measured: about 1e-8 m/s, spread about 0.
-// Reference: rest. Tolerance: the issue's 1 mm/s and 0.1 cell (issue 4's figures).
+// faces only (sim/fluid/region_free_surface.h), those faces read the wall cells ¼–⅜ cell shallow
+// and the water moved at 4.9 mm/s after 2 s. Measured: about 1e-8 m/s, spread about 0. Reference:
+// rest. Tolerance: the issue's 1 mm/s and 0.1 cell (issue 4's figures).
 TEST(MeshTankRest, BasinWithMeshWaterStaysAtRest) { expectAtRest("still_basin"); }
 
 // Claim (issue 5): the same with the basin moved 1.7 mm in x and 1.3 mm in z, so its walls cut

@@ -8,7 +8,6 @@
 #include <memory>
 #include <numbers>
 
-#include "io/mesh_distance.h"
 #include "sim/fluid/fluid_solver.h"
 #include "support/test_meshes.h"
 
@@ -62,12 +61,7 @@ FluidScene glassPour() {
   nozzle.end = 2.0;
   scene.emitters.push_back(nozzle);
   const TriangleMesh glass = test::glassMesh(kInner, kWall, kHeight, kBase, kFacets);
-  const io::MeshPlacement placement{1.0, {kCentreX, 0.0, kCentreZ}};
   MeshFile file{"glass.obj"};
-  auto distance = std::make_shared<MeshNodeDistance>();
-  distance->grid = scene.grid();
-  distance->nodes = io::meshNodeDistance(glass, placement, distance->grid);
-  file.distance = distance;
   auto placed = std::make_shared<TriangleMesh>(glass);
   for (auto& v : placed->vertices) {
     v[0] += static_cast<float>(kCentreX);

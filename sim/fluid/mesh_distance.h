@@ -1,15 +1,13 @@
-// io/mesh_distance.h — pressure projection input for mesh solids: the signed distance from the
-// solver grid's nodes to a closed triangle mesh placed in the scene (scale, then translate), in
-// the layout of sim::solidNodeDistance. In io/ because it runs OpenVDB's mesh-to-volume
-// conversion and sim/ does not link OpenVDB; data still flows one way, a mesh record in and a
-// sim::Array3f out.
+// sim/fluid/mesh_distance.h — pressure projection input for mesh solids: the signed distance from
+// the solver grid's nodes to a closed triangle mesh placed in the scene (scale, then translate), in
+// the layout of solidNodeDistance, computed with OpenVDB's mesh-to-volume conversion.
 #pragma once
 
 #include "sim/fluid/array3.h"
 #include "sim/fluid/grid.h"
 #include "sim/fluid/triangle_mesh.h"
 
-namespace fluidsound::io {
+namespace fluidsound::sim {
 
 /// Where a mesh goes: p_world = scale · p_file + translate (docs/scene.md, "Placement of a
 /// solid", without the rotation).
@@ -43,7 +41,8 @@ struct MeshDistanceSettings {
 ///        - beyond the band: exactly ±halfWidthCells·h.
 ///        Inside/outside comes from OpenVDB's flood fill of the intersected voxels, which does
 ///        not depend on the triangles' orientation.
-/// @param mesh       a closed mesh (io::requireClosedMesh); the sign of an open one is unreliable
+/// @param mesh       a closed mesh (sim/fluid/mesh_closedness.h); the sign of an open one is
+/// unreliable
 /// @param placement  scale > 0 and translation
 /// @param grid       the solver grid; only its nodes are computed, the mesh may extend beyond
 /// @param settings   halfWidthCells ≥ 2
@@ -53,21 +52,20 @@ struct MeshDistanceSettings {
 ///       seen only where a node lies inside it: a 2 mm wall in 5 mm cells gives negative nodes
 ///       (and closed faces) when it holds a plane of nodes, and otherwise only positive values,
 ///       down to the gap between the wall and the nearest node plane, with every face through
-///       the wall open: it leaks (measured in tests/io/mesh_distance_test.cpp,
+///       the wall open: it leaks (measured in tests/sim/fluid/mesh_distance_test.cpp,
 ///       MeshDistance.ThinWallIsSeenOnlyWhenItHoldsANodePlane). A finer OpenVDB grid would not
 ///       help: it is the sampling at the nodes that misses the wall. Closing such walls is the
 ///       thin-obstacle task (ray queries).
 /// @note Rotation (Solid::rotateDegrees) is not applied yet.
-sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                              const sim::GridGeometry& grid,
-                              const MeshDistanceSettings& settings = {});
+Array3f meshNodeDistance(const TriangleMesh& mesh, const MeshPlacement& placement,
+                         const GridGeometry& grid, const MeshDistanceSettings& settings = {});
 
 /// @brief Unsigned distance [m] from each grid node to the triangles of `mesh` placed by
 ///        `placement` — any set of triangles, closed or not — clamped to halfWidthCells·h. The
 ///        same exact closest-triangle zone and band as meshNodeDistance, without a sign.
 /// @throws std::invalid_argument as meshNodeDistance
-sim::Array3f meshNodeUnsignedDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                                      const sim::GridGeometry& grid,
-                                      const MeshDistanceSettings& settings = {});
+Array3f meshNodeUnsignedDistance(const TriangleMesh& mesh, const MeshPlacement& placement,
+                                 const GridGeometry& grid,
+                                 const MeshDistanceSettings& settings = {});
 
-}  // namespace fluidsound::io
+}  // namespace fluidsound::sim

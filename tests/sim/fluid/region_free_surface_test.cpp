@@ -1,17 +1,17 @@
-// Tests of io/region_free_surface.h: a mesh liquid region's signed distance at the cell centres
-// to its free faces — those not lying against a solid or a closed domain wall.
-#include "io/region_free_surface.h"
+// Tests of sim/fluid/region_free_surface.h: a mesh liquid region's signed distance at the cell
+// centres to its free faces — those not lying against a solid or a closed domain wall.
+#include "sim/fluid/region_free_surface.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "sim/scene.h"
 #include "sim/fluid/solid_geometry.h"
+#include "sim/scene.h"
 #include "support/test_meshes.h"
 
-namespace fluidsound::io {
+namespace fluidsound::sim {
 namespace {
 
 constexpr double kCell = 0.01;     // h [m]
@@ -47,7 +47,7 @@ double boxDistance(const Vec3& lo, const Vec3& hi, const Vec3& p) {
 // top as surface: at every centre outside the walls within 1.5 cells of the top the distance is
 // y − H, the cells the wall cuts included (the whole mesh's distance reads them 0.33 cell deep).
 // Reference: y − H. Tolerance: 1e-5 h, float rounding of OpenVDB's exact closest-triangle
-// distance (io/mesh_distance.h's exact zone reaches 1.66 h).
+// distance (sim/fluid/mesh_distance.h's exact zone reaches 1.66 h).
 TEST(RegionFreeSurface, FacesAgainstSolidsAndWallsAreNoSurface) {
   const double wallX = 0.0317, wallZ = 0.1233;
   const sim::Domain domain = tankDomain();
@@ -119,4 +119,4 @@ TEST(RegionFreeSurface, ARegionClearOfSolidsIsAllSurface) {
 }
 
 }  // namespace
-}  // namespace fluidsound::io
+}  // namespace fluidsound::sim

@@ -1,18 +1,17 @@
-// io/region_free_surface.cpp — see region_free_surface.h.
-#include "io/region_free_surface.h"
+// sim/fluid/region_free_surface.cpp — see region_free_surface.h.
+#include "sim/fluid/region_free_surface.h"
 
 #include <algorithm>
 
-#include "io/mesh_distance.h"
 #include "sim/fluid/liquid_level_set.h"
+#include "sim/fluid/mesh_distance.h"
 #include "sim/fluid/particle_seeding.h"
 
-namespace fluidsound::io {
+namespace fluidsound::sim {
 
-sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
-                                        const sim::Array3f& solidNodes,
-                                        const sim::GridGeometry& grid) {
-  const double contact = sim::kSolidContactCells * grid.cellSize;
+Array3f regionFreeSurfaceAtCentres(const TriangleMesh& region, const Array3f& solidNodes,
+                                   const GridGeometry& grid) {
+  const double contact = kSolidContactCells * grid.cellSize;
   // On (or beyond) the grid's boundary — a closed wall, or an open face the liquid runs on
   // through — or against a solid.
   const auto againstWallOrSolid = [&](const Vec3& p) {
@@ -20,9 +19,9 @@ sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
       if (p[a] <= grid.origin[a] + contact ||
           p[a] >= grid.origin[a] + grid.cells[a] * grid.cellSize - contact)
         return true;
-    return sim::interpolateNodes(solidNodes, grid, p) <= contact;
+    return interpolateNodes(solidNodes, grid, p) <= contact;
   };
-  sim::TriangleMesh free;
+  TriangleMesh free;
   free.vertices = region.vertices;
   for (const auto& t : region.triangles) {
     Vec3 corner[3], centroid{0.0, 0.0, 0.0};
@@ -36,14 +35,14 @@ sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
       free.triangles.push_back(t);
   }
   // A grid whose nodes are the cell centres: the samples are taken there, not interpolated.
-  sim::GridGeometry centres = grid;
+  GridGeometry centres = grid;
   for (int a = 0; a < 3; ++a) {
     centres.origin[a] += 0.5 * grid.cellSize;
     centres.cells[a] -= 1;
   }
-  const sim::Array3f whole = meshNodeDistance(region, MeshPlacement{}, centres);
-  const sim::Array3f toFree = meshNodeUnsignedDistance(free, MeshPlacement{}, centres);
-  sim::Array3f out = whole;
+  const Array3f whole = meshNodeDistance(region, MeshPlacement{}, centres);
+  const Array3f toFree = meshNodeUnsignedDistance(free, MeshPlacement{}, centres);
+  Array3f out = whole;
   auto& value = out.values();
   const auto& freeValue = toFree.values();
   for (std::size_t c = 0; c < value.size(); ++c)
@@ -51,4 +50,4 @@ sim::Array3f regionFreeSurfaceAtCentres(const sim::TriangleMesh& region,
   return out;
 }
 
-}  // namespace fluidsound::io
+}  // namespace fluidsound::sim

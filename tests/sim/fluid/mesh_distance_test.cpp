@@ -1,7 +1,7 @@
-// tests/io/mesh_distance_test.cpp — nodal signed distances of placed meshes (OpenVDB
+// tests/sim/fluid/mesh_distance_test.cpp — nodal signed distances of placed meshes (OpenVDB
 // meshToVolume) against closed-form distances of a box and a sphere, the clamp beyond the narrow
 // band, independence of the triangles' orientation, and what a wall thinner than a cell gives.
-#include "io/mesh_distance.h"
+#include "sim/fluid/mesh_distance.h"
 
 #include <gtest/gtest.h>
 
@@ -17,9 +17,8 @@
 #include "support/reference_distances.h"
 #include "support/test_meshes.h"
 
-namespace fluidsound::io {
+namespace fluidsound::sim {
 namespace {
-
 
 /// OpenVDB returns the closest-triangle distance as a float in world units. For the grids below
 /// (≤ 51 nodes per axis, h ≤ 1 cm, so |x| ≤ 0.5 m) float rounding of the positions and the
@@ -31,7 +30,9 @@ constexpr double kFloatToleranceCells = 1e-5;
 /// A 0.5 m cube of 50 cells of 1 cm, origin at 0.
 sim::GridGeometry testGrid() { return sim::GridGeometry{{50, 50, 50}, 0.01, {0.0, 0.0, 0.0}}; }
 
-double boxDistance(const Vec3& p, const Vec3& lo, const Vec3& hi) { return test::referenceBoxDistance(p, lo, hi); }
+double boxDistance(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+  return test::referenceBoxDistance(p, lo, hi);
+}
 
 /// Where the nodal values are exact [cells]: OpenVDB computes the distance to a triangle at
 /// every voxel one step (of 26) from a voxel that the triangle passes within √3/2 of. For a
@@ -236,4 +237,4 @@ TEST(MeshDistance, ThinWallIsSeenOnlyWhenItHoldsANodePlane) {
 }
 
 }  // namespace
-}  // namespace fluidsound::io
+}  // namespace fluidsound::sim

@@ -1,6 +1,6 @@
-// io/mesh_distance.cpp — see mesh_distance.h. Its own file: instantiating OpenVDB's
+// sim/fluid/mesh_distance.cpp — see mesh_distance.h. Its own file: instantiating OpenVDB's
 // MeshToVolume takes about 20 s to compile (docs/toolchain facts).
-#include "io/mesh_distance.h"
+#include "sim/fluid/mesh_distance.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/MeshToVolume.h>
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fluidsound::io {
+namespace fluidsound::sim {
 namespace {
 
 /// The MeshDataAdapter interface of openvdb::tools::meshToVolume: the mesh's triangles with
@@ -20,8 +20,8 @@ namespace {
 /// (i, j, k)), computed in double from the float file coordinates.
 class PlacedTriangles {
  public:
-  PlacedTriangles(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                  const sim::GridGeometry& grid)
+  PlacedTriangles(const TriangleMesh& mesh, const MeshPlacement& placement,
+                  const GridGeometry& grid)
       : mesh_(mesh), placement_(placement), grid_(grid) {}
 
   std::size_t polygonCount() const { return mesh_.triangles.size(); }
@@ -36,9 +36,9 @@ class PlacedTriangles {
   }
 
  private:
-  const sim::TriangleMesh& mesh_;
+  const TriangleMesh& mesh_;
   const MeshPlacement& placement_;
-  const sim::GridGeometry& grid_;
+  const GridGeometry& grid_;
 };
 
 /// OpenVDB grows its band by whole voxels from the voxels the triangles touch, so a node just
@@ -52,9 +52,9 @@ namespace {
 
 /// The band of `mesh` sampled at the grid's nodes by meshToVolume with `flags`, clamped to
 /// [lowest, halfWidthCells·h]; see meshNodeDistance.
-sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings,
-                              int flags, bool isSigned) {
+Array3f sampleMeshVolume(const TriangleMesh& mesh, const MeshPlacement& placement,
+                         const GridGeometry& grid, const MeshDistanceSettings& settings, int flags,
+                         bool isSigned) {
   if (!(placement.scale > 0.0) || !std::isfinite(placement.scale))
     throw std::invalid_argument("meshNodeDistance: scale must be finite and > 0, is " +
                                 std::to_string(placement.scale));
@@ -65,7 +65,7 @@ sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement
   const double h = grid.cellSize;
   const float band = static_cast<float>(settings.halfWidthCells * h);
   const float lowest = isSigned ? -band : 0.0f;
-  sim::Array3f distance(grid.nodeCount(), band);
+  Array3f distance(grid.nodeCount(), band);
   if (mesh.triangles.empty()) return distance;
 
   // Voxel (i, j, k) is centred on node (i, j, k): index → world is origin + index·h.
@@ -77,7 +77,7 @@ sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement
 
   // Inactive voxels hold ±background = ±halfWidth·h already; the clamp also bounds the few
   // band voxels OpenVDB leaves just past the band's edge.
-  const sim::Index3 n = grid.nodeCount();
+  const Index3 n = grid.nodeCount();
   tbb::parallel_for(tbb::blocked_range<int>(0, n[2]), [&](const tbb::blocked_range<int>& r) {
     auto accessor = field->getConstAccessor();  // one per block: accessors cache, not thread-safe
     for (int k = r.begin(); k < r.end(); ++k)
@@ -90,18 +90,17 @@ sim::Array3f sampleMeshVolume(const sim::TriangleMesh& mesh, const MeshPlacement
 
 }  // namespace
 
-sim::Array3f meshNodeDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                              const sim::GridGeometry& grid, const MeshDistanceSettings& settings) {
+Array3f meshNodeDistance(const TriangleMesh& mesh, const MeshPlacement& placement,
+                         const GridGeometry& grid, const MeshDistanceSettings& settings) {
   return sampleMeshVolume(mesh, placement, grid, settings, openvdb::tools::DISABLE_RENORMALIZATION,
                           true);
 }
 
-sim::Array3f meshNodeUnsignedDistance(const sim::TriangleMesh& mesh, const MeshPlacement& placement,
-                                      const sim::GridGeometry& grid,
-                                      const MeshDistanceSettings& settings) {
+Array3f meshNodeUnsignedDistance(const TriangleMesh& mesh, const MeshPlacement& placement,
+                                 const GridGeometry& grid, const MeshDistanceSettings& settings) {
   return sampleMeshVolume(
       mesh, placement, grid, settings,
       openvdb::tools::UNSIGNED_DISTANCE_FIELD | openvdb::tools::DISABLE_RENORMALIZATION, false);
 }
 
-}  // namespace fluidsound::io
+}  // namespace fluidsound::sim
