@@ -1,22 +1,21 @@
-// io/spectrogram_image.cpp — the spectrogram PNG: a Hann-window STFT (Eigen's FFT), max-pooled onto
-// the plot's pixel grid, coloured in dB relative to the peak and drawn with axes, ticks and a
-// colour bar by cairo; written atomically. What the picture shows: docs/spectrogram.md.
+// io/spectrogram_image.cpp — the spectrogram PNG: the pooled STFT power of
+// acoustics/analysis/spectrogram.h on the plot's pixel grid, coloured in dB relative to the peak
+// and drawn with axes, ticks and a colour bar by cairo; written atomically. What the picture
+// shows: docs/spectrogram.md.
 #include "io/spectrogram_image.h"
 
 #include <cairo.h>
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <cstdio>
-#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <unsupported/Eigen/FFT>
 #include <vector>
 
+#include "acoustics/analysis/spectrogram.h"
 #include "io/input_error.h"
 #include "io/interruption.h"
 #include "io/output_file.h"
@@ -110,118 +109,19 @@ std::vector<float> selectSignal(const AudioBuffer& audio, int channel) {
   return signal;
 }
 
-/// Axis position u in [0, 1] (0 = bottom of the plot) of `frequency` [Hz].
-double axisFraction(double frequency, double nyquist, const SpectrogramSettings& s) {
-  if (!s.logFrequency) return frequency / nyquist;
-  if (frequency <= 0.0) return -std::numeric_limits<double>::infinity();
-  return std::log(frequency / s.minFrequency) / std::log(nyquist / s.minFrequency);
-}
-
-/// Inverse of axisFraction [Hz].
-double axisFrequency(double u, double nyquist, const SpectrogramSettings& s) {
-  if (!s.logFrequency) return u * nyquist;
-  return s.minFrequency * std::pow(nyquist / s.minFrequency, u);
-}
-
-/// Power spectra of the STFT frames, max-pooled onto the plot's pixels: `power[row * width + col]`,
-/// row 0 at the top. Frame j is centred on sample j·hop (zero-padded at both ends). A column takes
-/// the maximum over the frames whose centres fall in it, or, when frames are sparser than columns,
-/// the frame nearest to its centre; a row takes the maximum over the FFT bins that fall in it, or,
-/// when bins are sparser than rows, the power interpolated linearly at its centre frequency.
-std::vector<float> pooledPower(const std::vector<float>& signal, double sampleRate,
-                               const SpectrogramSettings& s) {
-  const SpectrogramPlotArea area = spectrogramPlotArea(s);
-  const auto n = static_cast<std::int64_t>(signal.size());
-  const int window = s.windowSamples;
-  const std::int64_t hop = s.hopSamples;
-  const std::int64_t frameCount = (n - 1) / hop + 1;
-  const double duration = static_cast<double>(n) / sampleRate;
-  const double nyquist = sampleRate / 2.0;
-  const int binCount = window / 2 + 1;
-  const double binWidth = sampleRate / window;  // Hz
-
-  // Frames per column: [firstFrame[c], lastFrame[c]], monotone in c.
-  const auto columnOfFrame = [&](std::int64_t j) {
-    const double x = timeToPixelColumn(static_cast<double>(j * hop) / sampleRate, duration, s);
-    return std::clamp(static_cast<int>(std::floor(x)) - area.left, 0, area.width - 1);
-  };
-  std::vector<std::int64_t> firstFrame(area.width, -1), lastFrame(area.width, -1);
-  for (std::int64_t j = 0; j < frameCount; ++j) {
-    const int c = columnOfFrame(j);
-    if (firstFrame[c] < 0) firstFrame[c] = j;
-    lastFrame[c] = j;
-  }
-  for (int c = 0; c < area.width; ++c) {
-    if (firstFrame[c] >= 0) continue;
-    const double centreTime = duration * (c + 0.5) / area.width;
-    const auto nearest = static_cast<std::int64_t>(std::llround(centreTime * sampleRate / hop));
-    firstFrame[c] = lastFrame[c] = std::clamp<std::int64_t>(nearest, 0, frameCount - 1);
-  }
-
-  // Rows per bin (−1: off the axis) and, for rows no bin falls in, interpolation weights.
-  std::vector<int> rowOfBin(binCount, -1);
-  std::vector<int> binsInRow(area.height, 0);
-  for (int b = 0; b < binCount; ++b) {
-    const double y = frequencyToPixelRow(b * binWidth, sampleRate, s);
-    if (!std::isfinite(y) || y > area.top + area.height) continue;  // below a log axis
-    const int row = static_cast<int>(std::floor(y)) - area.top;
-    rowOfBin[b] = std::clamp(row, 0, area.height - 1);  // the axis' bottom edge joins the last row
-    ++binsInRow[rowOfBin[b]];
-  }
-  struct Interpolation {
-    int lowerBin;
-    float upperWeight;
-  };
-  std::vector<Interpolation> interpolation(area.height);
-  for (int row = 0; row < area.height; ++row) {
-    const double u = (area.height - row - 0.5) / area.height;
-    const double bin = std::clamp(axisFrequency(u, nyquist, s) / binWidth, 0.0, binCount - 1.0);
-    const int lower = std::min(static_cast<int>(bin), binCount - 2);
-    interpolation[row] = {lower, static_cast<float>(bin - lower)};
-  }
-
-  // Periodic Hann window (the DFT-even form, exact for spectral analysis).
-  std::vector<float> hann(window);
-  for (int i = 0; i < window; ++i)
-    hann[i] = static_cast<float>(0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * i / window));
-
-  Eigen::FFT<float> fft;
-  fft.SetFlag(Eigen::FFT<float>::HalfSpectrum);
-  std::vector<float> frame(window);
-  std::vector<std::complex<float>> spectrum;
-  std::vector<float> framePower(binCount), columnPower(binCount);
-  std::int64_t cachedFrame = -1;  // columns may share a frame; ranges are monotone
-  const auto computeFrame = [&](std::int64_t j) {
-    if (j == cachedFrame) return;
-    const std::int64_t start = j * hop - window / 2;
-    for (int i = 0; i < window; ++i) {
-      const std::int64_t k = start + i;
-      frame[i] = (k >= 0 && k < n) ? hann[i] * signal[k] : 0.0f;
-    }
-    fft.fwd(spectrum, frame);
-    for (int b = 0; b < binCount; ++b) framePower[b] = std::norm(spectrum[b]);
-    cachedFrame = j;
-  };
-
-  std::vector<float> power(static_cast<std::size_t>(area.width) * area.height, 0.0f);
-  for (int c = 0; c < area.width; ++c) {
-    std::fill(columnPower.begin(), columnPower.end(), 0.0f);
-    for (std::int64_t j = firstFrame[c]; j <= lastFrame[c]; ++j) {
-      computeFrame(j);
-      for (int b = 0; b < binCount; ++b) columnPower[b] = std::max(columnPower[b], framePower[b]);
-    }
-    for (int row = 0; row < area.height; ++row) {
-      if (binsInRow[row] > 0) continue;
-      const auto [lower, w] = interpolation[row];
-      power[row * area.width + c] = (1.0f - w) * columnPower[lower] + w * columnPower[lower + 1];
-    }
-    for (int b = 0; b < binCount; ++b) {
-      if (rowOfBin[b] < 0) continue;
-      float& p = power[rowOfBin[b] * area.width + c];
-      p = std::max(p, columnPower[b]);
-    }
-  }
-  return power;
+/// The STFT and pooling grid of the picture: its plot area's pixels.
+acoustics::SpectrogramLayout layoutOf(const SpectrogramSettings& s) {
+  const SpectrogramPlotArea a = spectrogramPlotArea(s);
+  acoustics::SpectrogramLayout layout;
+  layout.windowSamples = s.windowSamples;
+  layout.hopSamples = s.hopSamples;
+  layout.logFrequency = s.logFrequency;
+  layout.minFrequency = s.minFrequency;
+  layout.columns = a.width;
+  layout.rows = a.height;
+  layout.left = a.left;
+  layout.top = a.top;
+  return layout;
 }
 
 /// A 1-2-5 step giving about `count` intervals over `span`.
@@ -245,16 +145,21 @@ std::string formatNumber(double value, int decimals) {
   return text;
 }
 
-/// Draws `text` with its anchor at (x, y); ax, ay in [0, 1] pick the anchor inside the text's
-/// ink box (0, 0 = top left; 0.5, 0.5 = centre). rotated: reads bottom to top.
-void drawText(cairo_t* cr, const std::string& text, double x, double y, double ax, double ay,
-              bool rotated = false) {
+/// Where a text goes: its anchor at (x, y) [px]; ax, ay in [0, 1] pick the anchor inside the
+/// text's ink box (0, 0 = top left; 0.5, 0.5 = centre). rotated: reads bottom to top.
+struct TextPlacement {
+  double x = 0.0, y = 0.0;
+  double ax = 0.0, ay = 0.0;
+  bool rotated = false;
+};
+
+void drawText(cairo_t* cr, const std::string& text, const TextPlacement& at) {
   cairo_text_extents_t e;
   cairo_text_extents(cr, text.c_str(), &e);
   cairo_save(cr);
-  cairo_translate(cr, x, y);
-  if (rotated) cairo_rotate(cr, -std::numbers::pi / 2.0);
-  cairo_move_to(cr, -e.x_bearing - ax * e.width, -e.y_bearing - ay * e.height);
+  cairo_translate(cr, at.x, at.y);
+  if (at.rotated) cairo_rotate(cr, -std::numbers::pi / 2.0);
+  cairo_move_to(cr, -e.x_bearing - at.ax * e.width, -e.y_bearing - at.ay * e.height);
   cairo_show_text(cr, text.c_str());
   cairo_restore(cr);
 }
@@ -295,10 +200,10 @@ void drawTimeAxis(cairo_t* cr, const SpectrogramPlotArea& a, double duration,
   for (int k = 0; k * step <= duration * (1.0 + 1e-9); ++k) {
     const double x = std::round(timeToPixelColumn(k * step, duration, s)) + 0.5;
     drawTick(cr, x, bottom, x, bottom + tickLengthPx);
-    drawText(cr, formatNumber(k * step, decimals), x, bottom + tickLengthPx + 4, 0.5, 0.0);
+    drawText(cr, formatNumber(k * step, decimals), {x, bottom + tickLengthPx + 4, 0.5, 0.0});
   }
   cairo_set_font_size(cr, labelFontPx);
-  drawText(cr, "time (s)", a.left + a.width / 2.0, bottom + tickLengthPx + 22, 0.5, 0.0);
+  drawText(cr, "time (s)", {a.left + a.width / 2.0, bottom + tickLengthPx + 22, 0.5, 0.0});
 }
 
 void drawFrequencyAxis(cairo_t* cr, const SpectrogramPlotArea& a, double sampleRate,
@@ -343,14 +248,14 @@ void drawFrequencyAxis(cairo_t* cr, const SpectrogramPlotArea& a, double sampleR
   for (const Tick& t : ticks) {
     const double y = std::round(frequencyToPixelRow(t.frequency, sampleRate, s)) + 0.5;
     drawTick(cr, a.left - tickLengthPx, y, a.left, y);
-    drawText(cr, t.label, a.left - tickLengthPx - 4, y, 1.0, 0.5);
+    drawText(cr, t.label, {a.left - tickLengthPx - 4.0, y, 1.0, 0.5});
   }
   for (double f : minorTicks) {
     const double y = std::round(frequencyToPixelRow(f, sampleRate, s)) + 0.5;
     drawTick(cr, a.left - tickLengthPx / 2.0, y, a.left, y);
   }
   cairo_set_font_size(cr, labelFontPx);
-  drawText(cr, axisLabel, 18, a.top + a.height / 2.0, 0.5, 0.5, true);
+  drawText(cr, axisLabel, {18, a.top + a.height / 2.0, 0.5, 0.5, true});
 }
 
 void drawColourBar(cairo_t* cr, const SpectrogramPlotArea& a, const SpectrogramSettings& s) {
@@ -377,11 +282,11 @@ void drawColourBar(cairo_t* cr, const SpectrogramPlotArea& a, const SpectrogramS
     cairo_text_extents_t e;
     cairo_text_extents(cr, label.c_str(), &e);
     labelWidth = std::max(labelWidth, e.width);
-    drawText(cr, label, right + tickLengthPx + 3, y, 0.0, 0.5);
+    drawText(cr, label, {right + tickLengthPx + 3, y, 0.0, 0.5});
   }
   cairo_set_font_size(cr, labelFontPx);
-  drawText(cr, "level (dB re peak)", right + tickLengthPx + 3 + labelWidth + 10,
-           a.top + a.height / 2.0, 0.5, 0.5, true);
+  drawText(cr, "level (dB re peak)",
+           {right + tickLengthPx + 3 + labelWidth + 10, a.top + a.height / 2.0, 0.5, 0.5, true});
 }
 
 void drawTitle(cairo_t* cr, const SpectrogramPlotArea& a, const std::string& title,
@@ -390,7 +295,7 @@ void drawTitle(cairo_t* cr, const SpectrogramPlotArea& a, const std::string& tit
   cairo_set_font_size(cr, titleFontPx);
   cairo_text_extents_t titleExtents;
   cairo_text_extents(cr, title.c_str(), &titleExtents);
-  drawText(cr, title, a.left, 14, 0.0, 0.0);
+  drawText(cr, title, {static_cast<double>(a.left), 14, 0.0, 0.0});
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, tickFontPx);
   cairo_text_extents_t e;
@@ -398,7 +303,7 @@ void drawTitle(cairo_t* cr, const SpectrogramPlotArea& a, const std::string& tit
   const double right = imageWidth - 10.0;
   if (right - e.width > a.left + titleExtents.width + 20.0) {  // only when it fits beside the title
     cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-    drawText(cr, details, right, 16, 1.0, 0.0);
+    drawText(cr, details, {right, 16, 1.0, 0.0});
     cairo_set_source_rgb(cr, 0, 0, 0);
   }
 }
@@ -418,7 +323,8 @@ SpectrogramPlotArea spectrogramPlotArea(const SpectrogramSettings& settings) {
 double frequencyToPixelRow(double frequency, double sampleRate,
                            const SpectrogramSettings& settings) {
   const SpectrogramPlotArea a = spectrogramPlotArea(settings);
-  return a.top + a.height * (1.0 - axisFraction(frequency, sampleRate / 2.0, settings));
+  return a.top + a.height * (1.0 - acoustics::spectrogramAxisFraction(frequency, sampleRate / 2.0,
+                                                                      layoutOf(settings)));
 }
 
 double timeToPixelColumn(double time, double duration, const SpectrogramSettings& settings) {
@@ -463,7 +369,8 @@ std::string encodeSpectrogramPng(const AudioBuffer& audio, const SpectrogramSett
 
   // Colour level of each plot pixel: 0 dB = the largest value in the picture.
   throwIfInterrupted("spectrogram");
-  const std::vector<float> power = pooledPower(signal, audio.sampleRate, settings);
+  const std::vector<float> power =
+      acoustics::pooledSpectrogramPower(signal, audio.sampleRate, layoutOf(settings)).power;
   throwIfInterrupted("spectrogram");
   const float peak = *std::max_element(power.begin(), power.end());
   const auto level = [&](int x, int y) {
