@@ -1,5 +1,5 @@
-// io/frame_surface.cpp — see frame_surface.h. The only file of the transfer stage that includes
-// OpenVDB (compile time; toolchain.md).
+// io/frame_surface.cpp — see frame_surface.h. The only file of the transfer stage's input that
+// includes OpenVDB (compile time; toolchain.md).
 #include "io/frame_surface.h"
 
 #include <cmath>
@@ -15,13 +15,13 @@
 
 namespace fluidsound::io {
 
-struct FrameSurface::Grid {
+struct FrameLevelSet::Grid {
   openvdb::FloatGrid::Ptr grid;
   double background = 0.0;  ///< |φ| outside the band [m]
   double voxel = 0.0;       ///< [m]
 };
 
-FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_unique<Grid>()) {
+FrameLevelSet::FrameLevelSet(const std::filesystem::path& path) : grid_(std::make_unique<Grid>()) {
   openvdb::initialize();
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path.string(), "", "a frame file written by fluidsound simulate", "no such file");
@@ -42,45 +42,23 @@ FrameSurface::FrameSurface(const std::filesystem::path& path) : grid_(std::make_
   grid_->voxel = grid_->grid->voxelSize()[0];
 }
 
-FrameSurface::~FrameSurface() = default;
-FrameSurface::FrameSurface(FrameSurface&&) noexcept = default;
-FrameSurface& FrameSurface::operator=(FrameSurface&&) noexcept = default;
+FrameLevelSet::~FrameLevelSet() = default;
+FrameLevelSet::FrameLevelSet(FrameLevelSet&&) noexcept = default;
+FrameLevelSet& FrameLevelSet::operator=(FrameLevelSet&&) noexcept = default;
 
-acoustics::LocalSurface FrameSurface::surfaceAbove(const Vec3& centre, double depth,
-                                                   const Vec3& up) const {
-  const acoustics::LocalSurface flat{{centre[0] + depth * up[0], centre[1] + depth * up[1], centre[2] + depth * up[2]},
-                                     up, depth};
-  openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sample(*grid_->grid);
-  const auto phi = [&](const Vec3& x) { return double(sample.wsSample(openvdb::Vec3d(x[0], x[1], x[2]))); };
-  const Vec3& p = flat.point;
-  const double value = phi(p);
-  if (std::abs(value) >= 0.99 * grid_->background) return flat;  // beyond the band
-  Vec3 gradient{};
-  double norm2 = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    Vec3 plus = p, minus = p;
-    plus[a] += grid_->voxel, minus[a] -= grid_->voxel;
-    gradient[a] = (phi(plus) - phi(minus)) / (2.0 * grid_->voxel);
-    norm2 += gradient[a] * gradient[a];
-  }
-  if (norm2 < 0.25) return flat;
-  const double norm = std::sqrt(norm2);
-  acoustics::LocalSurface s;
-  double h = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    s.normal[a] = gradient[a] / norm;
-    s.point[a] = p[a] - value * s.normal[a];
-  }
-  for (int a = 0; a < 3; ++a) h += (s.point[a] - centre[a]) * s.normal[a];
-  if (!(h > 0.0)) return flat;
-  s.depth = h;
-  // The plane through the surface point; the bubble sits h below it along the normal.
-  for (int a = 0; a < 3; ++a) s.point[a] = centre[a] + h * s.normal[a];
-  return s;
+double FrameLevelSet::phi(const Vec3& x) const {
+  const openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sample(
+      *grid_->grid);
+  return double(sample.wsSample(openvdb::Vec3d(x[0], x[1], x[2])));
 }
 
+double FrameLevelSet::bandHalfWidth() const { return grid_->background; }
+
+double FrameLevelSet::voxelSize() const { return grid_->voxel; }
+
 std::unique_ptr<acoustics::FrameSurface> FrameFolderSurfaces::open(int frame) const {
-  return std::make_unique<FrameSurface>(outdir_ / "frames" / frameFileName(frame, "vdb"));
+  return std::make_unique<acoustics::LevelSetFrameSurface>(
+      std::make_unique<FrameLevelSet>(outdir_ / "frames" / frameFileName(frame, "vdb")));
 }
 
 }  // namespace fluidsound::io

@@ -1,46 +1,43 @@
 // io/frame_surface.h — reading back a frame's liquid surface (frames/NNNN.vdb, grid `surface`)
-// for the transfer stage: the free surface above a bubble as a local plane (point, normal, depth),
-// and the frames of an output folder as the stage's acoustics::FrameSurfaces.
+// for the transfer stage: the level set sampled at world points (acoustics::LevelSetSampler; the
+// local plane above a bubble is computed in acoustics/transfer/level_set_surface.h), and the
+// frames of an output folder as the stage's acoustics::FrameSurfaces.
 #pragma once
 
 #include <filesystem>
 #include <memory>
 #include <utility>
 
-#include "acoustics/transfer/image_source_transfer.h"
+#include "acoustics/transfer/level_set_surface.h"
 #include "acoustics/transfer/transfer_stage.h"
 
 namespace fluidsound::io {
 
-/// One frame's `surface` level set, loaded for queries (OpenVDB kept out of this header).
-class FrameSurface : public acoustics::FrameSurface {
+/// One frame's `surface` level set, loaded for sampling (OpenVDB kept out of this header).
+class FrameLevelSet : public acoustics::LevelSetSampler {
  public:
   /// @throws InputError if the file is missing, unreadable or has no FloatGrid named `surface`
-  explicit FrameSurface(const std::filesystem::path& path);
-  ~FrameSurface() override;
-  FrameSurface(FrameSurface&&) noexcept;
-  FrameSurface& operator=(FrameSurface&&) noexcept;
+  explicit FrameLevelSet(const std::filesystem::path& path);
+  ~FrameLevelSet() override;
+  FrameLevelSet(FrameLevelSet&&) noexcept;
+  FrameLevelSet& operator=(FrameLevelSet&&) noexcept;
 
-  /// @brief The free surface above a bubble as a plane: from the point `depth` above the centre
-  ///        along `up` (the direction against gravity), the level set's gradient there gives the
-  ///        normal n and one Newton step onto φ = 0 the surface point q; the depth is (q − centre)·n.
-  ///        Where that point is outside the narrow band, the gradient is too weak (|∇φ| < ½) or
-  ///        the projected depth is not positive, the plane is the horizontal one at the track's
-  ///        depth (normal `up`).
-  /// @param centre  bubble centre [m]; `depth` [m] > 0 from the track; `up` a unit vector
-  acoustics::LocalSurface surfaceAbove(const Vec3& centre, double depth,
-                                       const Vec3& up) const override;
+  /// φ at `x` [m]: OpenVDB's trilinear BoxSampler in world space, the float value widened.
+  double phi(const Vec3& x) const override;
+  double bandHalfWidth() const override;  ///< |background| of the grid [m]
+  double voxelSize() const override;      ///< the grid's voxel size along x [m]
 
  private:
   struct Grid;
   std::unique_ptr<Grid> grid_;
 };
 
-/// The frames `fluidsound simulate` wrote into OUTDIR: frame f is OUTDIR/frames/NNNN.vdb.
+/// The frames `fluidsound simulate` wrote into OUTDIR: frame f is OUTDIR/frames/NNNN.vdb, opened
+/// as an acoustics::LevelSetFrameSurface over its FrameLevelSet.
 class FrameFolderSurfaces : public acoustics::FrameSurfaces {
  public:
   explicit FrameFolderSurfaces(std::filesystem::path outdir) : outdir_(std::move(outdir)) {}
-  /// @throws InputError as FrameSurface's constructor
+  /// @throws InputError as FrameLevelSet's constructor
   std::unique_ptr<acoustics::FrameSurface> open(int frame) const override;
 
  private:

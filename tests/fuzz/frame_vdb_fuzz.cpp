@@ -1,5 +1,5 @@
 // tests/fuzz/frame_vdb_fuzz.cpp — libFuzzer harness of the VDB frame reader (io/frame_surface.h
-// FrameSurface, the transfer stage's reader of frames/NNNN.vdb): any file loads, or is refused
+// FrameLevelSet, the transfer stage's reader of frames/NNNN.vdb): any file loads, or is refused
 // with a one-line io::InputError; a loaded surface answers a query above a point.
 #include <cstddef>
 #include <cstdint>
@@ -12,9 +12,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const fluidsound::fuzz::InputFile input("fuzz.vdb");
   const std::filesystem::path& path = input.write(data, size);
   try {
-    const fluidsound::io::FrameSurface surface(path);
+    const fluidsound::io::FrameLevelSet level(path);
     // A bubble 1 cm deep at the origin, gravity along −y (the seed frames hold liquid there).
-    (void)surface.surfaceAbove({0.0, 0.0, 0.0}, 0.01, {0.0, 1.0, 0.0});
+    (void)fluidsound::acoustics::localSurfacePlane(level, {0.0, 0.0, 0.0}, 0.01, {0.0, 1.0, 0.0});
   } catch (const fluidsound::io::InputError& error) {
     fluidsound::fuzz::requireOneLineNaming(error, path.string());
   } catch (const fluidsound::io::OutputError& error) {

@@ -74,11 +74,11 @@ bool endsWith(const std::string& text, const std::string& end) {
   return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-/// The InputError FrameSurface throws for `bytes`, or a failure if it throws none.
+/// The InputError FrameLevelSet throws for `bytes`, or a failure if it throws none.
 InputError frameError(const test::TempFolder& folder, const std::string& bytes) {
   const auto path = writeBytes(folder, bytes);
   try {
-    const FrameSurface surface(path);
+    const FrameLevelSet surface(path);
   } catch (const InputError& error) {
     EXPECT_EQ(error.file(), path.string());
     EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
@@ -264,7 +264,7 @@ TEST(VdbFileCheck, AcceptsABloscCompressedDelayedLoadTable) {
       << nodes << " nodes: no blosc block in the table";
   const auto path = writeBytes(folder, bytes);
   EXPECT_NO_THROW(requireIntactVdbFile(path));
-  EXPECT_NO_THROW(FrameSurface{path});
+  EXPECT_NO_THROW(FrameLevelSet{path});
 }
 
 // Claim: a metadata value of a fixed-size type whose size is another is refused: OpenVDB reads
@@ -315,7 +315,7 @@ TEST(VdbFileCheck, TruncatedOrDamagedFrameIsAnInputError) {
   const auto expectInputErrorOrSurface = [&](const std::string& content, const std::string& what) {
     std::ofstream(bad, std::ios::binary | std::ios::trunc) << content;
     try {
-      const FrameSurface surface(bad);  // a damaged value inside the tree may still read
+      const FrameLevelSet surface(bad);  // a damaged value inside the tree may still read
     } catch (const InputError& error) {
       EXPECT_EQ(error.file(), bad.string()) << what;
       EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos)
