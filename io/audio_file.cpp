@@ -235,10 +235,11 @@ AudioWriteReport writeAudio(const fs::path& path, const AudioBuffer& audio,
   return encoded.report;
 }
 
-EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
-                         const AudioWriteSettings& settings) {
-  // Validate everything before touching the disk.
-  const SampleLayout layout = sampleLayout(path, settings, audio.channels.size());
+namespace {
+
+/// The sample rate and channel names must fit the audio and the format.
+void checkRateAndNames(const fs::path& path, const AudioBuffer& audio,
+                       const AudioWriteSettings& settings) {
   const double rate = audio.sampleRate;
   if (!(rate >= 1 && rate <= INT_MAX) || rate != std::floor(rate)) {
     badSettings(
@@ -248,12 +249,12 @@ EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
     badSettings(path, std::to_string(settings.channelNames.size()) + " channel names for " +
                           std::to_string(audio.channels.size()) + " channels");
   }
-  AudioWriteReport report;
-  report.inputPeak = checkedPeak(path, audio);
-  report.gain = normalisationGain(path, audio, settings, report);
+}
 
+/// libsndfile's description of the file, checked.
+SF_INFO soundFileInfo(const fs::path& path, const AudioBuffer& audio, const SampleLayout& layout) {
   SF_INFO info{};
-  info.samplerate = static_cast<int>(rate);
+  info.samplerate = static_cast<int>(audio.sampleRate);
   info.channels = static_cast<int>(audio.channels.size());
   info.format = layout.format;
   if (audio.channels.size() > INT_MAX || !sf_format_check(&info)) {
@@ -261,6 +262,105 @@ EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
                           std::to_string(audio.channels.size()) + " channels at " +
                           std::to_string(info.samplerate) + " Hz");
   }
+  return info;
+}
+
+/// Where the interleaved blocks go: the loudness meter of the samples as written, then the file.
+struct SampleSink {
+  const fs::path& path;
+  SNDFILE* file;
+  acoustics::LoudnessMeter& meter;
+
+  OutputError failed() const {
+    return OutputError(path.string() + ": cannot write: " + sf_strerror(file));
+  }
+  void writeFloats(const std::vector<float>& block, std::size_t count) const {
+    meter.addInterleaved(block);
+    const auto want = static_cast<sf_count_t>(count);
+    if (sf_writef_float(file, block.data(), want) != want) throw failed();
+  }
+  void writeInts(const std::vector<int>& block, const std::vector<float>& levels,
+                 std::size_t count) const {
+    meter.addInterleaved(levels);
+    const auto want = static_cast<sf_count_t>(count);
+    if (sf_writef_int(file, block.data(), want) != want) throw failed();
+  }
+};
+
+/// 32-bit float samples: each sample times `gain`, rounded to float. Returns the peak written
+/// (full scale 1.0).
+double writeFloatSamples(const AudioBuffer& audio, double gain, const SampleSink& sink) {
+  const std::size_t channels = audio.channels.size();
+  const std::size_t frames = audio.frameCount();
+  double outputPeak = 0.0;
+  std::vector<float> block;
+  for (std::size_t start = 0; start < frames; start += kBlockFrames) {
+    const std::size_t count = std::min(kBlockFrames, frames - start);
+    block.resize(count * channels);
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t c = 0; c < channels; ++c) {
+        const float value = static_cast<float>(audio.channels[c][start + i] * gain);
+        outputPeak = std::max(outputPeak, static_cast<double>(std::abs(value)));
+        block[i * channels + c] = value;
+      }
+    }
+    sink.writeFloats(block, count);
+  }
+  return outputPeak;
+}
+
+/// Integer samples of `bits` bits with TPDF dither from `ditherSeed`, clipped to the codes
+/// (counted in report.clippedSamples). Returns the peak written (full scale 1.0).
+double writeDitheredSamples(const AudioBuffer& audio, int bits, std::uint64_t ditherSeed,
+                            const SampleSink& sink, AudioWriteReport& report) {
+  const std::size_t channels = audio.channels.size();
+  const std::size_t frames = audio.frameCount();
+  // Codes q in [-2^(bits-1), 2^(bits-1) - 1]; full scale 1.0 is 2^(bits-1), as libsndfile reads.
+  const double fullScale = std::ldexp(1.0, bits - 1);
+  const std::int64_t lowest = -static_cast<std::int64_t>(fullScale);
+  const std::int64_t highest = static_cast<std::int64_t>(fullScale) - 1;
+  // libsndfile keeps the top `bits` bits of the 32-bit ints it is given.
+  const std::int64_t toInt32 = std::int64_t{1} << (32 - bits);
+  std::mt19937_64 dither(ditherSeed);
+  std::int64_t largestCode = 0;
+  std::vector<int> block;
+  std::vector<float> levels;  // the codes at full scale 1.0, for the loudness meter
+  for (std::size_t start = 0; start < frames; start += kBlockFrames) {
+    const std::size_t count = std::min(kBlockFrames, frames - start);
+    block.resize(count * channels);
+    levels.resize(count * channels);
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t c = 0; c < channels; ++c) {
+        // TPDF dither: the sum of two independent uniform ±0.5 LSB values (Lipshitz,
+        // Wannamaker & Vanderkooy 1992), drawn frame by frame, channel by channel.
+        const double noise = uniform01(dither) + uniform01(dither) - 1.0;
+        const double scaled = audio.channels[c][start + i] * report.gain * fullScale;
+        auto code = static_cast<std::int64_t>(std::floor(scaled + noise + 0.5));
+        if (code > highest || code < lowest) {
+          code = std::clamp(code, lowest, highest);
+          ++report.clippedSamples;
+        }
+        largestCode = std::max(largestCode, code < 0 ? -code : code);
+        block[i * channels + c] = static_cast<int>(code * toInt32);
+        levels[i * channels + c] = static_cast<float>(static_cast<double>(code) / fullScale);
+      }
+    }
+    sink.writeInts(block, levels, count);
+  }
+  return static_cast<double>(largestCode) / fullScale;
+}
+
+}  // namespace
+
+EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
+                         const AudioWriteSettings& settings) {
+  // Validate everything before touching the disk.
+  const SampleLayout layout = sampleLayout(path, settings, audio.channels.size());
+  checkRateAndNames(path, audio, settings);
+  AudioWriteReport report;
+  report.inputPeak = checkedPeak(path, audio);
+  report.gain = normalisationGain(path, audio, settings, report);
+  SF_INFO info = soundFileInfo(path, audio, layout);
 
   MemoryFile memory;
   SF_VIRTUAL_IO io{MemoryFile::length, MemoryFile::seek, MemoryFile::read, MemoryFile::write,
@@ -273,71 +373,17 @@ EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
   // input would differ in those bytes (the peak is in report.json).
   sf_command(file.get(), SFC_SET_ADD_PEAK_CHUNK, nullptr, SF_FALSE);
   addChannelNames(path, file.get(), settings, layout.format);
-  acoustics::LoudnessMeter meter(audio.channels.size(), rate);  // of the samples as written
-  const auto writeFailed = [&] {
-    return OutputError(path.string() + ": cannot write: " + sf_strerror(file.get()));
-  };
-
-  const std::size_t channels = audio.channels.size();
-  const std::size_t frames = audio.frameCount();
-  double outputPeak = 0.0;  // full scale 1.0
-  if (layout.bits == 32) {
-    std::vector<float> block;
-    for (std::size_t start = 0; start < frames; start += kBlockFrames) {
-      const std::size_t count = std::min(kBlockFrames, frames - start);
-      block.resize(count * channels);
-      for (std::size_t i = 0; i < count; ++i) {
-        for (std::size_t c = 0; c < channels; ++c) {
-          const float value = static_cast<float>(audio.channels[c][start + i] * report.gain);
-          outputPeak = std::max(outputPeak, static_cast<double>(std::abs(value)));
-          block[i * channels + c] = value;
-        }
-      }
-      meter.addInterleaved(block);
-      const auto want = static_cast<sf_count_t>(count);
-      if (sf_writef_float(file.get(), block.data(), want) != want) throw writeFailed();
-    }
-  } else {
-    // Codes q in [-2^(bits-1), 2^(bits-1) - 1]; full scale 1.0 is 2^(bits-1), as libsndfile reads.
-    const double fullScale = std::ldexp(1.0, layout.bits - 1);
-    const std::int64_t lowest = -static_cast<std::int64_t>(fullScale);
-    const std::int64_t highest = static_cast<std::int64_t>(fullScale) - 1;
-    // libsndfile keeps the top `bits` bits of the 32-bit ints it is given.
-    const std::int64_t toInt32 = std::int64_t{1} << (32 - layout.bits);
-    std::mt19937_64 dither(settings.ditherSeed);
-    std::int64_t largestCode = 0;
-    std::vector<int> block;
-    std::vector<float> levels;  // the codes at full scale 1.0, for the loudness meter
-    for (std::size_t start = 0; start < frames; start += kBlockFrames) {
-      const std::size_t count = std::min(kBlockFrames, frames - start);
-      block.resize(count * channels);
-      levels.resize(count * channels);
-      for (std::size_t i = 0; i < count; ++i) {
-        for (std::size_t c = 0; c < channels; ++c) {
-          // TPDF dither: the sum of two independent uniform ±0.5 LSB values (Lipshitz,
-          // Wannamaker & Vanderkooy 1992), drawn frame by frame, channel by channel.
-          const double noise = uniform01(dither) + uniform01(dither) - 1.0;
-          const double scaled = audio.channels[c][start + i] * report.gain * fullScale;
-          auto code = static_cast<std::int64_t>(std::floor(scaled + noise + 0.5));
-          if (code > highest || code < lowest) {
-            code = std::clamp(code, lowest, highest);
-            ++report.clippedSamples;
-          }
-          largestCode = std::max(largestCode, code < 0 ? -code : code);
-          block[i * channels + c] = static_cast<int>(code * toInt32);
-          levels[i * channels + c] = static_cast<float>(static_cast<double>(code) / fullScale);
-        }
-      }
-      meter.addInterleaved(levels);
-      const auto want = static_cast<sf_count_t>(count);
-      if (sf_writef_int(file.get(), block.data(), want) != want) throw writeFailed();
-    }
-    outputPeak = static_cast<double>(largestCode) / fullScale;
-  }
+  acoustics::LoudnessMeter meter(audio.channels.size(),
+                                 audio.sampleRate);  // of the samples as written
+  const SampleSink sink{path, file.get(), meter};
+  const double outputPeak =
+      layout.bits == 32
+          ? writeFloatSamples(audio, report.gain, sink)
+          : writeDitheredSamples(audio, layout.bits, settings.ditherSeed, sink, report);
   if (const int code = file.close(); code != 0) {
     throw OutputError(path.string() + ": cannot write: " + sf_error_number(code));
   }
-  removeSpeakerPositions(memory.bytes, path, layout.format, channels);
+  removeSpeakerPositions(memory.bytes, path, layout.format, audio.channels.size());
   report.outputPeakDbfs = decibelsFromAmplitude(outputPeak);
   report.written = meter.measurement();
   return {std::move(memory.bytes), report};

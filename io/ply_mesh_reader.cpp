@@ -107,6 +107,71 @@ std::vector<std::string_view> words(std::string_view line) {
 
 std::string headerLine(std::size_t number) { return "line " + std::to_string(number); }
 
+/// One line of the header, split into words, with its place for messages.
+struct HeaderLine {
+  std::string_view text;
+  const std::vector<std::string_view>& words;
+  std::string place;  ///< "line N"
+  [[noreturn]] void fail(const std::string& expected, const MeshErrorReporter& report) const {
+    report.fail(place, expected, quotedExcerpt(text));
+  }
+};
+
+constexpr const char* kFormatExpected =
+    "\"format ascii 1.0\", \"format binary_little_endian 1.0\" or \"format binary_big_endian 1.0\"";
+
+/// `format ENCODING 1.0`.
+PlyFormat formatOf(const HeaderLine& at, const MeshErrorReporter& report) {
+  const auto& w = at.words;
+  if (w.size() != 3 || w[2] != "1.0") at.fail(kFormatExpected, report);
+  if (w[1] == "ascii") return PlyFormat::Ascii;
+  if (w[1] == "binary_little_endian") return PlyFormat::BinaryLittleEndian;
+  if (w[1] == "binary_big_endian") return PlyFormat::BinaryBigEndian;
+  at.fail(kFormatExpected, report);
+}
+
+/// `element NAME COUNT`.
+PlyElement elementOf(const HeaderLine& at, const MeshErrorReporter& report) {
+  const auto& w = at.words;
+  PlyElement element;
+  std::uint64_t count = 0;
+  bool valid = w.size() == 3;
+  if (valid) {
+    const auto [end, error] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
+    valid = error == std::errc{} && end == w[2].data() + w[2].size();
+  }
+  if (!valid) at.fail("\"element NAME COUNT\" with a whole COUNT >= 0", report);
+  element.name = std::string(w[1]);
+  element.count = count;
+  return element;
+}
+
+/// `property TYPE NAME` or `property list COUNT_TYPE VALUE_TYPE NAME`.
+PlyProperty propertyOf(const HeaderLine& at, const MeshErrorReporter& report) {
+  const auto& w = at.words;
+  const std::string types = "char, uchar, short, ushort, int, uint, float or double";
+  PlyProperty property;
+  if (w.size() == 5 && w[1] == "list") {
+    const auto countType = typeNamed(w[2]), valueType = typeNamed(w[3]);
+    if (!countType || !isInteger(*countType) || !valueType)
+      at.fail(
+          "\"property list COUNT_TYPE VALUE_TYPE NAME\" with an integer COUNT_TYPE and each type "
+          "one of " +
+              types,
+          report);
+    property.isList = true;
+    property.countType = *countType;
+    property.valueType = *valueType;
+    property.name = std::string(w[4]);
+  } else {
+    const auto type = w.size() == 3 ? typeNamed(w[1]) : std::nullopt;
+    if (!type) at.fail("\"property TYPE NAME\" with TYPE one of " + types, report);
+    property.valueType = *type;
+    property.name = std::string(w[2]);
+  }
+  return property;
+}
+
 PlyHeader parseHeader(std::string_view bytes, const MeshErrorReporter& report) {
   PlyHeader header;
   std::size_t offset = 0, lineNumber = 0;
@@ -130,62 +195,16 @@ PlyHeader parseHeader(std::string_view bytes, const MeshErrorReporter& report) {
     }
     if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "end_header") break;
+    const HeaderLine at{line, w, headerLine(lineNumber)};
     if (w[0] == "format") {
-      const std::string expected =
-          "\"format ascii 1.0\", \"format binary_little_endian 1.0\" or "
-          "\"format binary_big_endian 1.0\"";
-      if (formatSeen || w.size() != 3 || w[2] != "1.0")
-        report.fail(headerLine(lineNumber), expected, quotedExcerpt(line));
-      if (w[1] == "ascii")
-        header.format = PlyFormat::Ascii;
-      else if (w[1] == "binary_little_endian")
-        header.format = PlyFormat::BinaryLittleEndian;
-      else if (w[1] == "binary_big_endian")
-        header.format = PlyFormat::BinaryBigEndian;
-      else
-        report.fail(headerLine(lineNumber), expected, quotedExcerpt(line));
+      if (formatSeen) at.fail(kFormatExpected, report);
+      header.format = formatOf(at, report);
       formatSeen = true;
     } else if (w[0] == "element") {
-      PlyElement element;
-      std::uint64_t count = 0;
-      bool valid = w.size() == 3;
-      if (valid) {
-        const auto [end, error] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
-        valid = error == std::errc{} && end == w[2].data() + w[2].size();
-      }
-      if (!valid)
-        report.fail(headerLine(lineNumber), "\"element NAME COUNT\" with a whole COUNT >= 0",
-                    quotedExcerpt(line));
-      element.name = std::string(w[1]);
-      element.count = count;
-      header.elements.push_back(std::move(element));
+      header.elements.push_back(elementOf(at, report));
     } else if (w[0] == "property") {
-      const std::string types = "char, uchar, short, ushort, int, uint, float or double";
-      if (header.elements.empty())
-        report.fail(headerLine(lineNumber), "an \"element\" line before the first property",
-                    quotedExcerpt(line));
-      PlyProperty property;
-      if (w.size() == 5 && w[1] == "list") {
-        const auto countType = typeNamed(w[2]), valueType = typeNamed(w[3]);
-        if (!countType || !isInteger(*countType) || !valueType)
-          report.fail(headerLine(lineNumber),
-                      "\"property list COUNT_TYPE VALUE_TYPE NAME\" with an integer COUNT_TYPE "
-                      "and each type one of " +
-                          types,
-                      quotedExcerpt(line));
-        property.isList = true;
-        property.countType = *countType;
-        property.valueType = *valueType;
-        property.name = std::string(w[4]);
-      } else {
-        const auto type = w.size() == 3 ? typeNamed(w[1]) : std::nullopt;
-        if (!type)
-          report.fail(headerLine(lineNumber), "\"property TYPE NAME\" with TYPE one of " + types,
-                      quotedExcerpt(line));
-        property.valueType = *type;
-        property.name = std::string(w[2]);
-      }
-      header.elements.back().properties.push_back(std::move(property));
+      if (header.elements.empty()) at.fail("an \"element\" line before the first property", report);
+      header.elements.back().properties.push_back(propertyOf(at, report));
     } else {
       report.fail(headerLine(lineNumber),
                   "a PLY header line (format, element, property, comment, obj_info or end_header)",
@@ -298,104 +317,111 @@ int propertyIndex(const PlyElement& element, std::initializer_list<std::string_v
 
 }  // namespace
 
-sim::TriangleMesh parsePlyMesh(std::string_view bytes, const MeshErrorReporter& report) {
-  const PlyHeader header = parseHeader(bytes, report);
+namespace {
 
-  // The vertex element and its x, y, z; the face element and its index list.
-  const PlyElement* vertexElement = nullptr;
-  const PlyElement* faceElement = nullptr;
-  for (const PlyElement& e : header.elements) {
-    if (e.name == "vertex" && !vertexElement) vertexElement = &e;
-    if (e.name == "face" && !faceElement) faceElement = &e;
-  }
+/// The elements the mesh is read from: the vertex element and its x, y, z properties; the face
+/// element (if any) and its index list property.
+struct MeshElements {
+  const PlyElement* vertex = nullptr;
+  const PlyElement* face = nullptr;
   std::array<int, 3> xyz{-1, -1, -1};
-  if (vertexElement) {
-    xyz = {propertyIndex(*vertexElement, {"x"}), propertyIndex(*vertexElement, {"y"}),
-           propertyIndex(*vertexElement, {"z"})};
+  int indexList = -1;
+};
+
+MeshElements meshElements(const PlyHeader& header, const MeshErrorReporter& report) {
+  MeshElements m;
+  for (const PlyElement& e : header.elements) {
+    if (e.name == "vertex" && !m.vertex) m.vertex = &e;
+    if (e.name == "face" && !m.face) m.face = &e;
+  }
+  if (m.vertex) {
+    m.xyz = {propertyIndex(*m.vertex, {"x"}), propertyIndex(*m.vertex, {"y"}),
+             propertyIndex(*m.vertex, {"z"})};
   }
   const std::string vertexExpected = "an element \"vertex\" with scalar properties x, y and z";
-  if (!vertexElement) report.fail("", vertexExpected, "no vertex element in the header");
+  if (!m.vertex) report.fail("", vertexExpected, "no vertex element in the header");
   for (int a = 0; a < 3; ++a) {
-    if (xyz[a] < 0 || vertexElement->properties[xyz[a]].isList)
+    if (m.xyz[a] < 0 || m.vertex->properties[m.xyz[a]].isList)
       report.fail("", vertexExpected, std::string("no scalar property ") + "xyz"[a]);
   }
-  if (vertexElement->count > std::numeric_limits<std::uint32_t>::max())
-    report.fail("", "at most 4294967295 vertices", std::to_string(vertexElement->count));
-  int indexList = -1;
-  if (faceElement) {
-    indexList = propertyIndex(*faceElement, {"vertex_indices", "vertex_index"});
-    if (indexList < 0 || !faceElement->properties[indexList].isList ||
-        !isInteger(faceElement->properties[indexList].valueType))
+  if (m.vertex->count > std::numeric_limits<std::uint32_t>::max())
+    report.fail("", "at most 4294967295 vertices", std::to_string(m.vertex->count));
+  if (m.face) {
+    m.indexList = propertyIndex(*m.face, {"vertex_indices", "vertex_index"});
+    if (m.indexList < 0 || !m.face->properties[m.indexList].isList ||
+        !isInteger(m.face->properties[m.indexList].valueType))
       report.fail("", "an element \"face\" with an integer list property vertex_indices",
                   "no such list among its properties");
   }
+  return m;
+}
 
-  sim::TriangleMesh mesh;
-  // Face corners, flat: face f has corners[faceStart[f] … faceStart[f + 1]).
+/// What the data section holds for the mesh: the vertices and the faces' corners, flat (face f
+/// has corners[faceStart[f] … faceStart[f + 1])).
+struct PlyData {
+  std::vector<std::array<float, 3>> vertices;
   std::vector<std::int64_t> corners;
   std::vector<std::size_t> faceStart{0};
-  // Reserve no more than the data could hold, so a lying header cannot exhaust memory.
-  const std::size_t dataBytes = bytes.size() - header.dataOffset;
-  mesh.vertices.reserve(std::min<std::uint64_t>(vertexElement->count, dataBytes));
+};
 
-  PlyValueReader values(bytes.substr(header.dataOffset), header.format);
-  for (const PlyElement& element : header.elements) {
-    if (element.properties.empty()) continue;  // nothing to read, however many
-    const bool isVertex = &element == vertexElement;
-    const bool isFace = &element == faceElement;
-    for (std::uint64_t item = 0; item < element.count; ++item) {
-      const auto location = [&] { return element.name + " " + std::to_string(item); };
-      std::array<double, 3> position{};
-      for (std::size_t p = 0; p < element.properties.size(); ++p) {
-        const PlyProperty& property = element.properties[p];
-        std::string bad;
-        const auto read = [&](PlyType type, const std::string& what) {
-          const std::optional<double> value = values.next(type, bad);
-          if (!value) {
-            report.fail(location(),
-                        what + " of property \"" + property.name + "\" (" +
-                            std::string(typeName(type)) + ")",
-                        bad.empty() ? "end of file" : quotedExcerpt(bad));
-          }
-          return *value;
-        };
-        if (!property.isList) {
-          const double value = read(property.valueType, "a value");
-          if (isVertex)
-            for (int a = 0; a < 3; ++a)
-              if (static_cast<int>(p) == xyz[a]) position[a] = value;
-          continue;
-        }
-        const double length = read(property.countType, "a list length");
-        if (length < 0)
-          report.fail(location(), "a list length >= 0 of property \"" + property.name + "\"",
-                      numberText(length));
-        const bool isIndexList = isFace && static_cast<int>(p) == indexList;
-        if (isIndexList && length < 3)
-          report.fail(location(), "a face of at least 3 vertex indices",
-                      numberText(length) + " indices");
-        for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(length); ++k) {
-          const double value = read(property.valueType, "a list entry");
-          if (isIndexList) corners.push_back(static_cast<std::int64_t>(value));
-        }
-        if (isIndexList) faceStart.push_back(corners.size());
+/// Reads one item of `element` (`isVertex`: its position into data.vertices; `indexList`: the
+/// index of the face list property, or −1).
+void readItem(const PlyElement& element, std::uint64_t item, PlyValueReader& values,
+              const MeshElements& m, PlyData& data, const MeshErrorReporter& report) {
+  const bool isVertex = &element == m.vertex;
+  const bool isFace = &element == m.face;
+  const auto location = [&] { return element.name + " " + std::to_string(item); };
+  std::array<double, 3> position{};
+  for (std::size_t p = 0; p < element.properties.size(); ++p) {
+    const PlyProperty& property = element.properties[p];
+    std::string bad;
+    const auto read = [&](PlyType type, const std::string& what) {
+      const std::optional<double> value = values.next(type, bad);
+      if (!value) {
+        report.fail(
+            location(),
+            what + " of property \"" + property.name + "\" (" + std::string(typeName(type)) + ")",
+            bad.empty() ? "end of file" : quotedExcerpt(bad));
       }
-      if (isVertex) {
-        const std::array<float, 3> v{static_cast<float>(position[0]),
-                                     static_cast<float>(position[1]),
-                                     static_cast<float>(position[2])};
-        if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
-          report.fail(location(), "finite coordinates x, y, z within float range (|x| <= 3.4e38)",
-                      pointText(position[0], position[1], position[2]));
-        mesh.vertices.push_back(v);
-      }
+      return *value;
+    };
+    if (!property.isList) {
+      const double value = read(property.valueType, "a value");
+      if (isVertex)
+        for (int a = 0; a < 3; ++a)
+          if (static_cast<int>(p) == m.xyz[a]) position[a] = value;
+      continue;
     }
+    const double length = read(property.countType, "a list length");
+    if (length < 0)
+      report.fail(location(), "a list length >= 0 of property \"" + property.name + "\"",
+                  numberText(length));
+    const bool isIndexList = isFace && static_cast<int>(p) == m.indexList;
+    if (isIndexList && length < 3)
+      report.fail(location(), "a face of at least 3 vertex indices",
+                  numberText(length) + " indices");
+    for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(length); ++k) {
+      const double value = read(property.valueType, "a list entry");
+      if (isIndexList) data.corners.push_back(static_cast<std::int64_t>(value));
+    }
+    if (isIndexList) data.faceStart.push_back(data.corners.size());
   }
+  if (isVertex) {
+    const std::array<float, 3> v{static_cast<float>(position[0]), static_cast<float>(position[1]),
+                                 static_cast<float>(position[2])};
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+      report.fail(location(), "finite coordinates x, y, z within float range (|x| <= 3.4e38)",
+                  pointText(position[0], position[1], position[2]));
+    data.vertices.push_back(v);
+  }
+}
 
+/// The faces as triangle fans, their indices checked against the vertex count.
+void addFans(const PlyData& data, const MeshErrorReporter& report, sim::TriangleMesh& mesh) {
   const std::int64_t vertexCount = static_cast<std::int64_t>(mesh.vertices.size());
-  for (std::size_t f = 0; f + 1 < faceStart.size(); ++f) {
-    const std::span<const std::int64_t> polygon(corners.data() + faceStart[f],
-                                                faceStart[f + 1] - faceStart[f]);
+  for (std::size_t f = 0; f + 1 < data.faceStart.size(); ++f) {
+    const std::span<const std::int64_t> polygon(data.corners.data() + data.faceStart[f],
+                                                data.faceStart[f + 1] - data.faceStart[f]);
     for (const std::int64_t index : polygon) {
       if (index < 0 || index >= vertexCount)
         report.fail("face " + std::to_string(f),
@@ -408,6 +434,26 @@ sim::TriangleMesh parsePlyMesh(std::string_view bytes, const MeshErrorReporter& 
                                 static_cast<std::uint32_t>(polygon[k]),
                                 static_cast<std::uint32_t>(polygon[k + 1])});
   }
+}
+
+}  // namespace
+
+sim::TriangleMesh parsePlyMesh(std::string_view bytes, const MeshErrorReporter& report) {
+  const PlyHeader header = parseHeader(bytes, report);
+  const MeshElements m = meshElements(header, report);
+  PlyData data;
+  // Reserve no more than the data could hold, so a lying header cannot exhaust memory.
+  const std::size_t dataBytes = bytes.size() - header.dataOffset;
+  data.vertices.reserve(std::min<std::uint64_t>(m.vertex->count, dataBytes));
+  PlyValueReader values(bytes.substr(header.dataOffset), header.format);
+  for (const PlyElement& element : header.elements) {
+    if (element.properties.empty()) continue;  // nothing to read, however many
+    for (std::uint64_t item = 0; item < element.count; ++item)
+      readItem(element, item, values, m, data, report);
+  }
+  sim::TriangleMesh mesh;
+  mesh.vertices = std::move(data.vertices);
+  addFans(data, report, mesh);
   return mesh;
 }
 
