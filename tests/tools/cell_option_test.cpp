@@ -45,9 +45,9 @@ nlohmann::json readJson(const fs::path& path) {
 }
 
 // Claim: `simulate --cell 0.01` simulates the 2 cm scene on 1 cm cells (24 × 16 × 4 = 1536
-// cells), mesh solid included: the solver refuses a mesh distance sampled on another grid
-// (sim/fluid/fluid_solver.cpp), so this also shows the meshes load after the override. Reference: the
-// report's settings.
+// cells), mesh solid included: the solver samples the mesh's distance on its own grid
+// (sim/fluid/scene_mesh_distances.h), whatever the cell size was when the mesh was read. Reference:
+// the report's settings.
 TEST(CellOption, SimulateRunsOnTheGivenCellSize) {
   const TempFolder folder;
   const fs::path scene = writeScene(folder.path()), out = folder.path() / "out";
