@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "acoustics/analysis/loudness.h"
+#include "io/loudness.h"
 #include "io/channel_layout.h"
 #include "io/input_error.h"
 #include "io/json_validation.h"
@@ -110,10 +110,10 @@ double normalisationGain(const fs::path& path, const AudioBuffer& audio,
   // Measured with the peak at full scale, so that BS.1770's one absolute gate (−70 LUFS) drops
   // only what is 70 dB below the loudest sound, whatever the render's level in pascals.
   const double probe = report.inputPeak > 0 ? 1.0 / report.inputPeak : 1.0;
-  const acoustics::LoudnessMeasurement m =
-      acoustics::measureLoudness(audio.channels, audio.sampleRate, probe);
-  const std::optional<acoustics::LoudnessGain> gain =
-      acoustics::loudnessNormalisationGain(m, *settings.loudness);
+  const io::LoudnessMeasurement m =
+      io::measureLoudness(audio.channels, audio.sampleRate, probe);
+  const std::optional<io::LoudnessGain> gain =
+      io::loudnessNormalisationGain(m, *settings.loudness);
   if (!gain) {
     report.loudnessUnmeasured = true;
     return 1.0;
@@ -269,7 +269,7 @@ SF_INFO soundFileInfo(const fs::path& path, const AudioBuffer& audio, const Samp
 struct SampleSink {
   const fs::path& path;
   SNDFILE* file;
-  acoustics::LoudnessMeter& meter;
+  io::LoudnessMeter& meter;
 
   OutputError failed() const {
     return OutputError(path.string() + ": cannot write: " + sf_strerror(file));
@@ -373,7 +373,7 @@ EncodedAudio encodeAudio(const fs::path& path, const AudioBuffer& audio,
   // input would differ in those bytes (the peak is in report.json).
   sf_command(file.get(), SFC_SET_ADD_PEAK_CHUNK, nullptr, SF_FALSE);
   addChannelNames(path, file.get(), settings, layout.format);
-  acoustics::LoudnessMeter meter(audio.channels.size(),
+  io::LoudnessMeter meter(audio.channels.size(),
                                  audio.sampleRate);  // of the samples as written
   const SampleSink sink{path, file.get(), meter};
   const double outputPeak =

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "acoustics/analysis/loudness.h"
+#include "io/loudness.h"
 
 namespace fluidsound::io {
 
@@ -28,7 +28,7 @@ struct AudioWriteSettings {
   int bitsPerSample = 32;                      ///< 32 (float; WAV only), 24 or 16 (PCM, TPDF-dithered)
   std::optional<double> normalizePeakDbfs;     ///< scale so the peak is at this level [dBFS], e.g. −1
   /// scale to this integrated loudness under a true-peak ceiling (not with normalizePeakDbfs)
-  std::optional<acoustics::LoudnessTarget> loudness;
+  std::optional<io::LoudnessTarget> loudness;
   std::uint64_t ditherSeed = 1;                ///< seed of the TPDF dither noise (deterministic)
   /// channel c's name (its listener's), written to a WAV's iXML chunk; empty: none, else one per
   /// channel
@@ -42,7 +42,7 @@ struct AudioWriteReport {
   double outputPeakDbfs = 0.0;   ///< peak written, dB relative to full scale 1.0
   std::int64_t clippedSamples = 0;  ///< samples beyond full scale in a PCM file (clipped by the format)
   /// loudness of the samples written (after gain, dither and clipping), full scale 1.0
-  acoustics::LoudnessMeasurement written;
+  io::LoudnessMeasurement written;
   bool truePeakLimited =
       false;  ///< the loudness target's gain was lowered to meet the true-peak ceiling
   bool loudnessUnmeasured = false;  ///< a loudness target was asked for, but the input has no

@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "acoustics/analysis/loudness.h"
+#include "io/loudness.h"
 
 namespace fluidsound::io {
 namespace {
@@ -35,7 +35,7 @@ std::vector<std::pair<std::string, std::string>> libraryVersions() {
       {"tbb", TBB_runtime_version()},
       {"eigen", dotted(EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
       {"libsndfile", sndfileVersion()},
-      {"libebur128", acoustics::loudnessLibraryVersion()},
+      {"libebur128", io::loudnessLibraryVersion()},
       {"cairo", cairo_version_string()},
       {"nlohmann_json", dotted(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR,
                                NLOHMANN_JSON_VERSION_PATCH)},

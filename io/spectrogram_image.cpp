@@ -15,9 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "acoustics/analysis/spectrogram.h"
 #include "io/input_error.h"
-#include "io/interruption.h"
 #include "io/output_file.h"
 
 namespace fluidsound::io {
@@ -353,25 +351,36 @@ std::array<std::uint8_t, 3> spectrogramColour(double level) {
   return rgb;
 }
 
+std::vector<float> spectrogramSignal(const AudioBuffer& audio, const SpectrogramSettings& settings) {
+  validate(audio, settings);
+  return selectSignal(audio, settings.channel);
+}
+
+acoustics::SpectrogramLayout spectrogramLayout(const SpectrogramSettings& settings) {
+  return layoutOf(settings);
+}
+
 void writeSpectrogramPng(const std::filesystem::path& path, const AudioBuffer& audio,
-                         const SpectrogramSettings& settings, const std::string& title) {
+                         const SpectrogramSettings& settings, const std::string& title,
+                         const acoustics::SpectrogramPower& power) {
   // Encoded in memory, then written by the output rule (output_file.h).
   writeOutputFile(path, encodeSpectrogramPng(audio, settings,
-                                             title.empty() ? path.filename().string() : title));
+                                             title.empty() ? path.filename().string() : title, power));
 }
 
 std::string encodeSpectrogramPng(const AudioBuffer& audio, const SpectrogramSettings& settings,
-                                 const std::string& title) {
+                                 const std::string& title, const acoustics::SpectrogramPower& pooled) {
   validate(audio, settings);
-  const std::vector<float> signal = selectSignal(audio, settings.channel);
   const SpectrogramPlotArea area = spectrogramPlotArea(settings);
-  const double duration = static_cast<double>(signal.size()) / audio.sampleRate;
+  const double duration = static_cast<double>(audio.frameCount()) / audio.sampleRate;
+  if (pooled.columns != area.width || pooled.rows != area.height ||
+      pooled.power.size() != static_cast<std::size_t>(area.width) * area.height)
+    throw std::invalid_argument("spectrogram: the power's grid (" + std::to_string(pooled.columns) +
+                                " x " + std::to_string(pooled.rows) + ") is not the plot area's (" +
+                                std::to_string(area.width) + " x " + std::to_string(area.height) + ")");
 
   // Colour level of each plot pixel: 0 dB = the largest value in the picture.
-  throwIfInterrupted("spectrogram");
-  const std::vector<float> power =
-      acoustics::pooledSpectrogramPower(signal, audio.sampleRate, layoutOf(settings)).power;
-  throwIfInterrupted("spectrogram");
+  const std::vector<float>& power = pooled.power;
   const float peak = *std::max_element(power.begin(), power.end());
   const auto level = [&](int x, int y) {
     const float p = power[static_cast<std::size_t>(y) * area.width + x];

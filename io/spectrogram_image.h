@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "acoustics/analysis/spectrogram_power.h"
 #include "io/audio_file.h"
 
 namespace fluidsound::io {
@@ -22,22 +23,31 @@ struct SpectrogramSettings {
   int channel = -1;                 ///< channel to draw; −1 = mean of all channels
 };
 
-/// @brief Renders the spectrogram of `audio` to a PNG, written by the output rule of
-///        output_file.h (docs/spectrogram.md).
-/// @param title  first line of the picture; empty: the PNG's file name
-/// @throws OutputError if the PNG cannot be written; std::invalid_argument for empty audio,
-///         channels of different lengths, a non-finite sample or sample rate, or bad settings
-///         (window outside 16…2²⁰, hop < 1, dynamic range ≤ 0, channel out of range, image smaller
-///         than spectrogramMinimumSize or larger than 16384 px, log axis with minFrequency outside
-///         (0, Nyquist))
-void writeSpectrogramPng(const std::filesystem::path& path, const AudioBuffer& audio,
-                         const SpectrogramSettings& settings, const std::string& title = {});
+/// @brief The signal the picture of `audio` shows: channel settings.channel, or the sample-wise
+///        mean of all channels (channel < 0).
+/// @throws std::invalid_argument for empty audio, channels of different lengths, a non-finite
+///         sample or sample rate, or bad settings (window outside 16…2²⁰, hop < 1, dynamic range
+///         ≤ 0, channel out of range, image smaller than spectrogramMinimumSize or larger than
+///         16384 px, log axis with minFrequency outside (0, Nyquist))
+std::vector<float> spectrogramSignal(const AudioBuffer& audio, const SpectrogramSettings& settings);
 
-/// @brief The PNG writeSpectrogramPng() writes, as bytes, titled `title`; for callers that write
-///        several outputs all or nothing (io::OutputBatch).
-/// @throws std::invalid_argument as writeSpectrogramPng(); io::Interrupted after a signal
+/// @brief The grid of the picture's plot area that the spectrogram's power is pooled onto
+///        (acoustics::pooledSpectrogramPower): one cell per pixel.
+acoustics::SpectrogramLayout spectrogramLayout(const SpectrogramSettings& settings);
+
+/// @brief The PNG of the pooled spectrogram `power` of `audio` (on spectrogramLayout(settings)),
+///        titled `title`, as bytes; for callers that write several outputs all or nothing
+///        (io::OutputBatch).
+/// @throws std::invalid_argument as spectrogramSignal(), or for power of another grid
 std::string encodeSpectrogramPng(const AudioBuffer& audio, const SpectrogramSettings& settings,
-                                 const std::string& title);
+                                 const std::string& title, const acoustics::SpectrogramPower& power);
+
+/// @brief Writes encodeSpectrogramPng()'s bytes to `path` by the output rule of output_file.h.
+/// @param title  first line of the picture; empty: the PNG's file name
+/// @throws OutputError if the PNG cannot be written; else as encodeSpectrogramPng()
+void writeSpectrogramPng(const std::filesystem::path& path, const AudioBuffer& audio,
+                         const SpectrogramSettings& settings, const std::string& title,
+                         const acoustics::SpectrogramPower& power);
 
 // The picture's geometry and colours, public so that tests (and callers that annotate the
 // picture) use the same mapping as the renderer.

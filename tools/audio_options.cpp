@@ -62,7 +62,7 @@ io::AudioWriteSettings audioWriteSettings(const AudioOutputOptions& o,
   write.format = layout.format;
   write.bitsPerSample = layout.bits;
   write.normalizePeakDbfs = o.normalizeDbfs;
-  if (o.loudnessLufs) write.loudness = acoustics::LoudnessTarget{*o.loudnessLufs, o.truePeakDbtp};
+  if (o.loudnessLufs) write.loudness = io::LoudnessTarget{*o.loudnessLufs, o.truePeakDbtp};
   write.channelNames = std::move(channelNames);
   return write;
 }

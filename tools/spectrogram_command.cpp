@@ -11,6 +11,7 @@
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
 #include "tools/number_checks.h"
+#include "tools/spectrogram_picture.h"
 
 namespace fluidsound::tools {
 
@@ -38,7 +39,7 @@ int runSpectrogramCommand(const SpectrogramOptions& o) {
   requireDistinctFiles({{"audio", o.input, true}, {"--output", o.output}});
   io::requireWritableFolder(o.output);
   const io::AudioBuffer audio = io::readAudio(o.input);
-  io::writeSpectrogramPng(o.output, audio, o.settings, std::filesystem::path(o.input).filename().string());
+  io::writeOutputFile(o.output, spectrogramPicture(audio, o.settings, std::filesystem::path(o.input).filename().string()));
   if (!o.common.quiet)
     std::fprintf(stderr, "fluidsound: wrote %s\n",
                  io::isStandardOutput(o.output) ? "standard output" : o.output.c_str());

@@ -11,6 +11,7 @@
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
 #include "tools/command_options.h"
+#include "tools/spectrogram_picture.h"
 
 namespace fluidsound::tools {
 
@@ -62,7 +63,7 @@ io::AudioWriteReport addSynthFiles(io::OutputBatch& outputs, const SynthOptions&
     const std::string title = io::isStandardOutput(o.output)
                                   ? std::string("standard output")
                                   : std::filesystem::path(o.output).filename().string();
-    outputs.add(o.spectrogram, io::encodeSpectrogramPng(audio, {}, title));
+    outputs.add(o.spectrogram, spectrogramPicture(audio, {}, title));
   }
   return encoded.report;
 }

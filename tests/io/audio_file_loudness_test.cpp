@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "acoustics/analysis/loudness.h"
+#include "io/loudness.h"
 #include "io/audio_file.h"
 #include "support/temp_folder.h"
 
@@ -32,9 +32,9 @@ AudioBuffer sine(double amplitude) {
   return audio;
 }
 
-acoustics::LoudnessMeasurement measuredFile(const fs::path& path) {
+io::LoudnessMeasurement measuredFile(const fs::path& path) {
   const AudioBuffer read = readAudio(path);
-  return acoustics::measureLoudness(read.channels, read.sampleRate);
+  return io::measureLoudness(read.channels, read.sampleRate);
 }
 
 // Claim: with a loudness target the file written measures at the target, for float and 16-bit
@@ -51,9 +51,9 @@ TEST(AudioFileLoudness, TheFileWrittenMeetsTheTargetAtAnyRenderLevel) {
       const fs::path path = folder.path() / ("out" + std::to_string(bits) + ".wav");
       AudioWriteSettings settings;
       settings.bitsPerSample = bits;
-      settings.loudness = acoustics::LoudnessTarget{-23.0, -1.0};
+      settings.loudness = io::LoudnessTarget{-23.0, -1.0};
       const AudioWriteReport report = writeAudio(path, sine(pascals), settings);
-      const acoustics::LoudnessMeasurement m = measuredFile(path);
+      const io::LoudnessMeasurement m = measuredFile(path);
       ASSERT_TRUE(m.integratedLufs.has_value()) << pascals << " Pa, " << bits << " bits";
       EXPECT_NEAR(*m.integratedLufs, -23.0, 0.1) << pascals << " Pa, " << bits << " bits";
       ASSERT_TRUE(report.written.integratedLufs.has_value());
@@ -74,10 +74,10 @@ TEST(AudioFileLoudness, TheTruePeakCeilingLowersTheGain) {
   const test::TempFolder folder;
   const fs::path path = folder.path() / "loud.wav";
   AudioWriteSettings settings;
-  settings.loudness = acoustics::LoudnessTarget{-3.0, -6.0};
+  settings.loudness = io::LoudnessTarget{-3.0, -6.0};
   const AudioWriteReport report = writeAudio(path, sine(0.2), settings);
   EXPECT_TRUE(report.truePeakLimited);
-  const acoustics::LoudnessMeasurement m = measuredFile(path);
+  const io::LoudnessMeasurement m = measuredFile(path);
   EXPECT_LE(m.truePeakDbtp, -6.0 + 0.2);
   EXPECT_GE(m.truePeakDbtp, -6.0 - 0.4);
   ASSERT_TRUE(m.integratedLufs.has_value());
@@ -97,7 +97,7 @@ TEST(AudioFileLoudness, CalibratedBySilenceFlaggedAndConflictsRefused) {
 
   AudioBuffer silence = sine(0.0);
   AudioWriteSettings loudness;
-  loudness.loudness = acoustics::LoudnessTarget{};
+  loudness.loudness = io::LoudnessTarget{};
   const AudioWriteReport silent = writeAudio(folder.path() / "silent.wav", silence, loudness);
   EXPECT_EQ(silent.gain, 1.0);
   EXPECT_TRUE(silent.loudnessUnmeasured);

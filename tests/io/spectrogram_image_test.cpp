@@ -1,5 +1,6 @@
 // tests/io/spectrogram_image_test.cpp — the spectrogram PNG puts a tone where the axes say it is,
-// at the requested size, with an ordered colour map; failures leave no file behind.
+// at the requested size, with an ordered colour map; failures leave no file behind; power of
+// another grid than the picture's is refused.
 #include "io/spectrogram_image.h"
 
 #include <cairo.h>
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "acoustics/analysis/spectrogram.h"
 #include "io/input_error.h"
 
 namespace fluidsound::io {
@@ -25,6 +27,14 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double sampleRate = 48000.0;  // Hz
+
+/// The spectrogram PNG of `audio` at `path`, as the CLI makes it (tools/spectrogram_picture.h):
+/// the picture's signal and grid from io, the pooled power from acoustics, drawn and written by io.
+void writePicture(const fs::path& path, const AudioBuffer& audio, const SpectrogramSettings& settings) {
+  const std::vector<float> signal = spectrogramSignal(audio, settings);
+  writeSpectrogramPng(path, audio, settings, {},
+                      acoustics::pooledSpectrogramPower(signal, audio.sampleRate, spectrogramLayout(settings)));
+}
 
 /// CIE L* (0 black … 100 white) of an sRGB colour.
 double lightness(double r8, double g8, double b8) {
@@ -183,7 +193,7 @@ void expectTonesOnAxis(const fs::path& folder, bool logFrequency) {
   // FFT bins (16, 128, 512 × 48000/2048 Hz), so no scalloping shifts the peak.
   for (double frequency : {375.0, 3000.0, 12000.0}) {
     const fs::path png = folder / ("tone-" + std::to_string(static_cast<int>(frequency)) + ".png");
-    writeSpectrogramPng(png, toneBurst(frequency, 1.0, 0.0, 1.0), settings);
+    writePicture(png, toneBurst(frequency, 1.0, 0.0, 1.0), settings);
     const Picture picture = readPicture(png);
     ASSERT_EQ(picture.width, settings.width) << png;
     ASSERT_EQ(picture.height, settings.height) << png;
@@ -214,7 +224,7 @@ TEST_F(SpectrogramImage, ToneBurstStartsAndEndsAtItsTimesOnAxis) {
   const SpectrogramPlotArea area = spectrogramPlotArea(settings);
   const double duration = 3.0, on = 1.0, off = 2.0;  // s
   const fs::path png = folder_ / "burst.png";
-  writeSpectrogramPng(png, toneBurst(3000.0, duration, on, off), settings);
+  writePicture(png, toneBurst(3000.0, duration, on, off), settings);
   const Picture picture = readPicture(png);
   ASSERT_EQ(picture.width, settings.width);
 
@@ -238,7 +248,7 @@ TEST_F(SpectrogramImage, ToneBurstStartsAndEndsAtItsTimesOnAxis) {
 
 TEST_F(SpectrogramImage, MissingFolderThrowsOutputError) {
   const fs::path png = folder_ / "no-such-folder" / "out.png";
-  EXPECT_THROW(writeSpectrogramPng(png, toneBurst(3000.0, 0.2, 0.0, 0.2), {}), OutputError);
+  EXPECT_THROW(writePicture(png, toneBurst(3000.0, 0.2, 0.0, 0.2), {}), OutputError);
   EXPECT_FALSE(fs::exists(png.parent_path()));
 }
 
@@ -246,7 +256,7 @@ TEST_F(SpectrogramImage, ReadOnlyFolderThrowsOutputErrorAndLeavesNoFile) {
   fs::permissions(folder_, fs::perms::owner_read | fs::perms::owner_exec);
   if (::access(folder_.c_str(), W_OK) == 0)
     GTEST_SKIP() << "running with rights that ignore permissions (root)";
-  EXPECT_THROW(writeSpectrogramPng(folder_ / "out.png", toneBurst(3000.0, 0.2, 0.0, 0.2), {}),
+  EXPECT_THROW(writePicture(folder_ / "out.png", toneBurst(3000.0, 0.2, 0.0, 0.2), {}),
                OutputError);
   EXPECT_TRUE(filesIn(folder_).empty());
 }
@@ -260,7 +270,7 @@ TEST_F(SpectrogramImage, ReadOnlyFolderThrowsOutputErrorAndLeavesNoFile) {
   ::setrlimit(RLIMIT_FSIZE, &limit);
   bool threw = false;
   try {
-    writeSpectrogramPng(folder / "out.png", toneBurst(3000.0, 0.5, 0.0, 0.5), {});
+    writePicture(folder / "out.png", toneBurst(3000.0, 0.5, 0.0, 0.5), {});
   } catch (const OutputError&) {
     threw = true;
   }
@@ -279,10 +289,26 @@ TEST_F(SpectrogramImage, FullDiskThrowsOutputErrorAndLeavesNoFile) {
 TEST_F(SpectrogramImage, EmptyAudioThrowsInvalidArgument) {
   const fs::path png = folder_ / "out.png";
   AudioBuffer noChannels;
-  EXPECT_THROW(writeSpectrogramPng(png, noChannels, {}), std::invalid_argument);
+  EXPECT_THROW(writePicture(png, noChannels, {}), std::invalid_argument);
   AudioBuffer noSamples;
   noSamples.channels.assign(2, {});
-  EXPECT_THROW(writeSpectrogramPng(png, noSamples, {}), std::invalid_argument);
+  EXPECT_THROW(writePicture(png, noSamples, {}), std::invalid_argument);
+  EXPECT_TRUE(filesIn(folder_).empty());
+}
+
+// Claim: the picture draws power pooled on its own plot area only; power of another grid (here
+// one column short) is refused before anything is written.
+TEST_F(SpectrogramImage, PowerOfAnotherGridIsRefused) {
+  const AudioBuffer audio = toneBurst(3000.0, 0.2, 0.0, 0.2);
+  const SpectrogramSettings settings;
+  acoustics::SpectrogramLayout layout = spectrogramLayout(settings);
+  const acoustics::SpectrogramPower right =
+      acoustics::pooledSpectrogramPower(spectrogramSignal(audio, settings), audio.sampleRate, layout);
+  EXPECT_FALSE(encodeSpectrogramPng(audio, settings, "t", right).empty());
+  layout.columns -= 1;
+  const acoustics::SpectrogramPower narrow =
+      acoustics::pooledSpectrogramPower(spectrogramSignal(audio, settings), audio.sampleRate, layout);
+  EXPECT_THROW(writeSpectrogramPng(folder_ / "out.png", audio, settings, {}, narrow), std::invalid_argument);
   EXPECT_TRUE(filesIn(folder_).empty());
 }
 
@@ -292,7 +318,7 @@ TEST_F(SpectrogramImage, BadSettingsThrowInvalidArgument) {
   const auto expectRejected = [&](auto change, const char* what) {
     SpectrogramSettings settings;
     change(settings);
-    EXPECT_THROW(writeSpectrogramPng(png, audio, settings), std::invalid_argument) << what;
+    EXPECT_THROW(writePicture(png, audio, settings), std::invalid_argument) << what;
   };
   expectRejected([](SpectrogramSettings& s) { s.hopSamples = 0; }, "hop 0");
   expectRejected([](SpectrogramSettings& s) { s.windowSamples = 8; }, "window 8");

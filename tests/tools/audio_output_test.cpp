@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "acoustics/analysis/loudness.h"
+#include "io/loudness.h"
 #include "acoustics/synthesis/oscillator_kernel.h"
 #include "io/audio_file.h"
 #include "support/command_runner.h"
@@ -44,9 +44,9 @@ fs::path writeText(const fs::path& path, const std::string& text) {
   return path;
 }
 
-acoustics::LoudnessMeasurement measuredFile(const fs::path& path) {
+io::LoudnessMeasurement measuredFile(const fs::path& path) {
   const io::AudioBuffer audio = io::readAudio(path);
-  return acoustics::measureLoudness(audio.channels, audio.sampleRate);
+  return io::measureLoudness(audio.channels, audio.sampleRate);
 }
 
 // Claim: synth and run take the same audio options, checked the same way (one helper): a ceiling
@@ -105,7 +105,7 @@ TEST(AudioOutput, SynthReportsTheCalibratedScaleLoudnessAndChannelNames) {
   EXPECT_EQ(audio["scale"], "1.0 = 1 Pa = 94.0 dB SPL");
   EXPECT_EQ(audio["calibrated"], true);
   EXPECT_EQ(audio["gain"], 1.0);
-  const acoustics::LoudnessMeasurement m = measuredFile(wav);
+  const io::LoudnessMeasurement m = measuredFile(wav);
   ASSERT_TRUE(m.integratedLufs.has_value());
   EXPECT_NEAR(audio["integrated_loudness_lufs"].get<double>(), *m.integratedLufs, 0.01);
   EXPECT_NEAR(audio["true_peak_dbtp"].get<double>(), m.truePeakDbtp, 0.01);
@@ -144,7 +144,7 @@ TEST(AudioOutput, SynthLoudnessTargetUnderATruePeakCeiling) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json audio =
         readJson(folder.path() / "target.flac.report.json")["results"]["audio_output"];
-    const acoustics::LoudnessMeasurement m = measuredFile(flac);
+    const io::LoudnessMeasurement m = measuredFile(flac);
     ASSERT_TRUE(m.integratedLufs.has_value());
     const bool limited = audio["true_peak_limited"].get<bool>();
     if (limited) {
@@ -181,7 +181,7 @@ TEST(AudioOutput, RunPassesTheAudioOptionsToItsSynthStage) {
   EXPECT_FALSE(fs::exists(out / "fall.wav"));
   nlohmann::json report = readJson(out / "report.json");
   EXPECT_EQ(report["run"]["audio"], "fall.flac");
-  const acoustics::LoudnessMeasurement m = measuredFile(out / "fall.flac");
+  const io::LoudnessMeasurement m = measuredFile(out / "fall.flac");
   ASSERT_TRUE(m.integratedLufs.has_value());
   EXPECT_NEAR(report["run"]["audio_output"]["integrated_loudness_lufs"].get<double>(),
               *m.integratedLufs, 0.01);
@@ -224,7 +224,7 @@ TEST(AudioOutput, ReportAndVersionListEveryLibraryAsAnObject) {
   EXPECT_EQ(versions["nlohmann_json"], std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
                                            std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
                                            std::to_string(NLOHMANN_JSON_VERSION_PATCH));
-  EXPECT_EQ(versions["libebur128"], acoustics::loudnessLibraryVersion());
+  EXPECT_EQ(versions["libebur128"], io::loudnessLibraryVersion());
 
   const fs::path text = folder.path() / "version.txt";
   ASSERT_EQ(std::system(

@@ -1,7 +1,7 @@
-// Tests of acoustics/analysis/loudness.h against the EBU Tech 3341 test signals (generated here): the
+// Tests of io/loudness.h against the EBU Tech 3341 test signals (generated here): the
 // integrated loudness of gated sine sequences, the true peak between samples, every listener
 // weighted alike, and the normalisation gain under a true-peak ceiling.
-#include "acoustics/analysis/loudness.h"
+#include "io/loudness.h"
 
 #include <gtest/gtest.h>
 #include <oneapi/tbb/task_arena.h>
@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace fluidsound::acoustics {
+namespace fluidsound::io {
 namespace {
 
 constexpr double kRate = 48000.0;
@@ -159,4 +159,4 @@ TEST(Loudness, NormalisationGainMeetsTargetUnderTheTruePeakCeiling) {
 }
 
 }  // namespace
-}  // namespace fluidsound::acoustics
+}  // namespace fluidsound::io

@@ -1,4 +1,4 @@
-// acoustics/analysis/loudness.h — programme loudness of a render (ITU-R BS.1770-4 / EBU R 128, through
+// io/loudness.h — programme loudness of a render (ITU-R BS.1770-4 / EBU R 128, through
 // libebur128): integrated loudness [LUFS] and true peak [dBTP], and the gain that brings a
 // render to a loudness target under a true-peak ceiling (docs/audio.md, "Loudness").
 #pragma once
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace fluidsound::acoustics {
+namespace fluidsound::io {
 
 /// What a loudness meter read. Full scale is 1.0 (a render in pascals: 1 Pa = 0 dBFS).
 struct LoudnessMeasurement {
@@ -75,4 +75,4 @@ std::optional<LoudnessGain> loudnessNormalisationGain(const LoudnessMeasurement&
 /// "1.2.6": the version of the libebur128 that runs (its own ebur128_get_version).
 std::string loudnessLibraryVersion();
 
-}  // namespace fluidsound::acoustics
+}  // namespace fluidsound::io

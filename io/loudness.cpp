@@ -1,5 +1,5 @@
-// acoustics/analysis/loudness.cpp — BS.1770 loudness through libebur128 (see loudness.h).
-#include "acoustics/analysis/loudness.h"
+// io/loudness.cpp — BS.1770 loudness through libebur128 (see loudness.h).
+#include "io/loudness.h"
 
 #include <ebur128.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -11,7 +11,7 @@
 #include <new>
 #include <stdexcept>
 
-namespace fluidsound::acoustics {
+namespace fluidsound::io {
 namespace {
 
 /// Frames handed to libebur128 per call by measureLoudness: bounds its interleaved scratch.
@@ -139,4 +139,4 @@ std::string loudnessLibraryVersion() {
   return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(patch);
 }
 
-}  // namespace fluidsound::acoustics
+}  // namespace fluidsound::io
