@@ -69,7 +69,7 @@ std::string counted(std::size_t n, const std::string& one, const std::string& ma
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-std::string edgeText(const sim::MeshEdge& edge, std::uint32_t first) {
+std::string edgeText(const MeshEdge& edge, std::uint32_t first) {
   return "vertices " + std::to_string(edge[0] + first) + " and " + std::to_string(edge[1] + first);
 }
 
@@ -143,9 +143,9 @@ sim::TriangleMesh readMeshFile(const fs::path& path, const MeshReference& refere
   return mesh;
 }
 
-sim::MeshClosedness requireClosedMesh(const sim::TriangleMesh& mesh, const fs::path& path,
+MeshClosedness requireClosedMesh(const sim::TriangleMesh& mesh, const fs::path& path,
                                       const MeshReference& reference) {
-  const sim::MeshClosedness closedness = sim::meshClosedness(mesh);
+  const MeshClosedness closedness = meshClosedness(mesh);
   if (closedness.closed()) return closedness;
 
   const std::uint32_t first = firstVertexNumber(path);

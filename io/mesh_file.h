@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/fluid/mesh_closedness.h"
+#include "io/mesh_closedness.h"
 #include "sim/fluid/triangle_mesh.h"
 
 namespace fluidsound::io {
@@ -44,7 +44,7 @@ struct MeshReference {
 sim::TriangleMesh readMeshFile(const std::filesystem::path& path,
                                const MeshReference& reference = {});
 
-/// @brief Requires a closed mesh (sim::MeshClosedness::closed: every edge shared by exactly two
+/// @brief Requires a closed mesh (MeshClosedness::closed: every edge shared by exactly two
 ///        triangles running along it in opposite directions).
 ///
 ///        Policy. Liquid meshes must be closed: the liquid is the volume inside. Solid meshes
@@ -63,7 +63,7 @@ sim::TriangleMesh readMeshFile(const std::filesystem::path& path,
 ///         `pool.obj: expected a closed triangle mesh (every edge shared by exactly two triangles
 ///         that run along it in opposite directions), found 4 boundary edges (holes; the first
 ///         between vertices 5 and 6)`
-sim::MeshClosedness requireClosedMesh(const sim::TriangleMesh& mesh,
+MeshClosedness requireClosedMesh(const sim::TriangleMesh& mesh,
                                       const std::filesystem::path& path,
                                       const MeshReference& reference = {});
 

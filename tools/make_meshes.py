@@ -4,7 +4,7 @@
 The OBJ files are generated, not drawn or downloaded: this script is their source. Every mesh is
 closed and oriented outward from the solid (or liquid) it bounds -- every edge shared by exactly
 two triangles running along it in opposite directions, triangles counter-clockwise seen from
-outside -- as io/mesh_file.h and sim/fluid/mesh_closedness.h require. Each surface piece (a disk, a
+outside -- as io/mesh_file.h and io/mesh_closedness.h require. Each surface piece (a disk, a
 band between two rings) is turned so that its triangles' normals agree with the outward
 direction of that piece, and the script checks the result before it writes anything: the edge
 rule, and a signed volume (sum of v0 . (v1 x v2) / 6) equal to the volume of the polygonal solid
@@ -297,7 +297,7 @@ def rounded(p):
 
 
 def check_closed(name, mesh, volume):
-    """The rules of sim/fluid/mesh_closedness.h on the rounded vertices, and the signed volume."""
+    """The rules of io/mesh_closedness.h on the rounded vertices, and the signed volume."""
     positions = [rounded(p) for p in mesh.vertices]
     weld = {}
     index = [weld.setdefault(p, i) for i, p in enumerate(positions)]

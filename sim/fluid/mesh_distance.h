@@ -41,7 +41,7 @@ struct MeshDistanceSettings {
 ///        - beyond the band: exactly ±halfWidthCells·h.
 ///        Inside/outside comes from OpenVDB's flood fill of the intersected voxels, which does
 ///        not depend on the triangles' orientation.
-/// @param mesh       a closed mesh (sim/fluid/mesh_closedness.h); the sign of an open one is
+/// @param mesh       a closed mesh (io/mesh_closedness.h); the sign of an open one is
 /// unreliable
 /// @param placement  scale > 0 and translation
 /// @param grid       the solver grid; only its nodes are computed, the mesh may extend beyond

@@ -36,7 +36,7 @@ struct MeshSolid {
 };
 
 /// Unit normals out of a closed mesh: (v1 − v0) × (v2 − v0), turned round when the mesh is
-/// oriented inward (negative enclosed volume; sim/fluid/mesh_closedness.h accepts either way round).
+/// oriented inward (negative enclosed volume; io/mesh_closedness.h accepts either way round).
 std::vector<Vec3> outwardNormals(const TriangleMesh& mesh) {
   std::vector<Vec3> normal(mesh.triangles.size());
   double volume6 = 0.0;  // 6 × the signed enclosed volume

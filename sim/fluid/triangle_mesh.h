@@ -12,7 +12,7 @@ namespace fluidsound::sim {
 ///        applied; scene meshes are in metres before `scale`).
 /// @note  Valid meshes (io::readMeshFile) have at least one triangle, finite vertices and every
 ///        index < vertices.size(). Vertices no triangle uses may be present. A closed mesh
-///        (meshClosedness, sim/fluid/mesh_closedness.h) is oriented outward or inward alike: the
+///        (meshClosedness, io/mesh_closedness.h) is oriented outward or inward alike: the
 ///        distance code (sim/fluid/mesh_distance.h) does not depend on the orientation.
 struct TriangleMesh {
   std::vector<std::array<float, 3>> vertices;           ///< positions [file units, m for scenes]

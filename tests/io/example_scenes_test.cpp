@@ -60,13 +60,13 @@ TEST(ExampleScenes, EverySceneParsesAndLoadsItsMeshes) {
 
 // Claim: every mesh in scenes/meshes/ is closed (every edge shared by two triangles running along
 // it in opposite directions) and oriented outward (positive signed volume). Reference: the rule
-// of sim/fluid/mesh_closedness.h, which the scenes' loader enforces.
+// of io/mesh_closedness.h, which the scenes' loader enforces.
 TEST(ExampleMeshes, EveryMeshIsClosedAndOutward) {
   const std::vector<fs::path> meshes = filesEndingWith(sourceDir() / "scenes" / "meshes", ".obj");
   EXPECT_GE(meshes.size(), 2u) << "glass.obj and basin.obj at least";
   for (const fs::path& file : meshes) {
     SCOPED_TRACE(file.string());
-    sim::MeshClosedness closedness;
+    io::MeshClosedness closedness;
     ASSERT_NO_THROW(closedness = requireClosedMesh(readMeshFile(file), file));
     EXPECT_EQ(closedness.degenerateTriangles, 0u);
     EXPECT_GT(closedness.signedVolume, 0.0) << "inward";
@@ -108,7 +108,7 @@ TEST(ExampleMeshes, GlassHasTheDocumentedShape) {
                  cz = e1[0] * e2[1] - e1[1] * e2[0];
     area += 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
   }
-  const sim::MeshClosedness closedness = requireClosedMesh(mesh, file);
+  const io::MeshClosedness closedness = requireClosedMesh(mesh, file);
   EXPECT_NEAR(closedness.signedVolume, expected, area * 1.1e-7)
       << "measured " << closedness.signedVolume << " m^3, expected " << expected << " m^3";
 }

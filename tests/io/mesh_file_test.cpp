@@ -73,7 +73,7 @@ TEST(MeshFile, CubeObjWithQuadsReadsAsEightVerticesAndTwelveTriangles) {
   EXPECT_EQ(mesh.triangles[0], (std::array<std::uint32_t, 3>{0, 4, 6}));
   EXPECT_EQ(mesh.triangles[1], (std::array<std::uint32_t, 3>{0, 6, 2}));
   EXPECT_EQ(mesh, test::boxMesh({0, 0, 0}, {1, 1, 1}));
-  const sim::MeshClosedness closedness = requireClosedMesh(mesh, folder.path() / "cube.obj");
+  const MeshClosedness closedness = requireClosedMesh(mesh, folder.path() / "cube.obj");
   EXPECT_TRUE(closedness.closed());
   EXPECT_EQ(closedness.edges, 18u);  // 12 cube edges + 6 quad diagonals
   EXPECT_DOUBLE_EQ(closedness.signedVolume, 1.0);
@@ -131,7 +131,7 @@ TEST(MeshFile, IcosphereIsClosedAndEnclosesNearlyTheBallVolume) {
       readMeshFile(write(folder, "ball.obj", test::objText(test::icosphere(3))));
   EXPECT_EQ(mesh.vertices.size(), 642u);
   EXPECT_EQ(mesh.triangles.size(), 1280u);
-  const sim::MeshClosedness closedness = requireClosedMesh(mesh, folder.path() / "ball.obj");
+  const MeshClosedness closedness = requireClosedMesh(mesh, folder.path() / "ball.obj");
   double dMin = 1.0;
   for (const auto& t : mesh.triangles) {
     const auto& a = mesh.vertices[t[0]];
@@ -160,7 +160,7 @@ TEST(MeshFile, OpenBoxIsRejectedNamingItsHole) {
   box.triangles.resize(10);  // the last two triangles are the +z face
   const fs::path path = write(folder, "open.obj", test::objText(box));
   const sim::TriangleMesh mesh = readMeshFile(path);
-  const sim::MeshClosedness closedness = sim::meshClosedness(mesh);
+  const MeshClosedness closedness = meshClosedness(mesh);
   EXPECT_EQ(closedness.boundaryEdges, 4u);
   EXPECT_EQ(closedness.nonManifoldEdges, 0u);
   EXPECT_EQ(closedness.misorientedEdges, 0u);

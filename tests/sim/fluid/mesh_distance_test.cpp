@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/fluid/mesh_closedness.h"
+#include "io/mesh_closedness.h"
 #include "sim/fluid/solid_geometry.h"
 #include "support/reference_distances.h"
 #include "support/test_meshes.h"
@@ -158,7 +158,7 @@ TEST(MeshDistance, OrientationOfTheTrianglesDoesNotMatter) {
       hi{double(0.31f), double(0.22f), double(0.43f)};
   sim::TriangleMesh box = test::boxMesh({0.11f, 0.12f, 0.13f}, {0.31f, 0.22f, 0.43f});
   for (auto& t : box.triangles) std::swap(t[1], t[2]);
-  ASSERT_LT(sim::meshClosedness(box).signedVolume, 0.0);  // oriented inward
+  ASSERT_LT(io::meshClosedness(box).signedVolume, 0.0);  // oriented inward
   const Comparison c =
       compare(meshNodeDistance(box, {}, grid), grid, 3 * h, kFloatToleranceCells * h,
               [&](const Vec3& p) { return boxDistance(p, lo, hi); });

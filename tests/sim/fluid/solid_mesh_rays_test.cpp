@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/fluid/mesh_closedness.h"
+#include "io/mesh_closedness.h"
 #include "support/test_meshes.h"
 
 namespace fluidsound::sim {
@@ -89,7 +89,7 @@ TEST(SolidMeshRays, AGlassWallStopsEveryRadialMove) {
   // outside it, at 1000 angles and heights, is stopped inside (radius < 30 mm); every move within
   // the cavity is free. Reference: the glass's geometry (facets lie within the circles).
   const TriangleMesh glass = test::glassMesh(0.030, 0.002, 0.100, 0.004, 48);
-  ASSERT_TRUE(meshClosedness(glass).closed());
+  ASSERT_TRUE(io::meshClosedness(glass).closed());
   const Solid solid = meshSolid(glass);
   const SolidMeshRays rays(std::span(&solid, 1));
   const double pi = std::acos(-1.0);

@@ -1,16 +1,16 @@
-// sim/fluid/mesh_closedness.cpp — see mesh_closedness.h.
-#include "sim/fluid/mesh_closedness.h"
+// io/mesh_closedness.cpp — see mesh_closedness.h.
+#include "io/mesh_closedness.h"
 
 #include <algorithm>
 #include <numeric>
 #include <vector>
 
-namespace fluidsound::sim {
+namespace fluidsound::io {
 namespace {
 
 /// For every vertex, the smallest index of a vertex at exactly the same position (-0 and +0 are
 /// the same position). Sorting keeps the result independent of hashing and thread count.
-std::vector<std::uint32_t> weldedVertexIndices(const TriangleMesh& mesh) {
+std::vector<std::uint32_t> weldedVertexIndices(const sim::TriangleMesh& mesh) {
   const std::size_t n = mesh.vertices.size();
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), std::uint32_t{0});
@@ -37,7 +37,7 @@ struct EdgeUse {
 
 }  // namespace
 
-MeshClosedness meshClosedness(const TriangleMesh& mesh) {
+MeshClosedness meshClosedness(const sim::TriangleMesh& mesh) {
   MeshClosedness result;
   const std::vector<std::uint32_t> welded = weldedVertexIndices(mesh);
 
@@ -85,4 +85,4 @@ MeshClosedness meshClosedness(const TriangleMesh& mesh) {
   return result;
 }
 
-}  // namespace fluidsound::sim
+}  // namespace fluidsound::io

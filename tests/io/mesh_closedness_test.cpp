@@ -1,12 +1,14 @@
-// tests/sim/fluid/mesh_closedness_test.cpp — the edge diagnosis of triangle meshes: closed, holed,
+// tests/io/mesh_closedness_test.cpp — the edge diagnosis of triangle meshes: closed, holed,
 // non-manifold, misoriented and degenerate cases, vertex welding, and the enclosed volume.
-#include "sim/fluid/mesh_closedness.h"
+#include "io/mesh_closedness.h"
 
 #include <gtest/gtest.h>
 
 #include "support/test_meshes.h"
 
-namespace fluidsound::sim {
+namespace fluidsound::io {
+
+using sim::TriangleMesh;
 namespace {
 
 TEST(MeshClosedness, BoxIsClosedAndEnclosesItsVolume) {
@@ -81,4 +83,4 @@ TEST(MeshClosedness, IcosphereIsClosed) {
 }
 
 }  // namespace
-}  // namespace fluidsound::sim
+}  // namespace fluidsound::io

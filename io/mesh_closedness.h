@@ -1,4 +1,4 @@
-// sim/fluid/mesh_closedness.h — scene input check: whether a triangle mesh bounds a volume (watertight,
+// io/mesh_closedness.h — scene input check: whether a triangle mesh bounds a volume (watertight,
 // manifold along its edges, consistently oriented), and if not, what is wrong and where.
 #pragma once
 
@@ -8,7 +8,7 @@
 
 #include "sim/fluid/triangle_mesh.h"
 
-namespace fluidsound::sim {
+namespace fluidsound::io {
 
 /// An edge as its two vertex indices, smaller first.
 using MeshEdge = std::array<std::uint32_t, 2>;
@@ -46,6 +46,6 @@ struct MeshClosedness {
 /// @brief Diagnoses the edges of `mesh` (see MeshClosedness). O(n log n) in the triangle count.
 /// @param mesh  any triangle mesh with finite vertices and indices < vertices.size()
 /// @return the counts, the first edge of each kind and the signed volume
-MeshClosedness meshClosedness(const TriangleMesh& mesh);
+MeshClosedness meshClosedness(const sim::TriangleMesh& mesh);
 
-}  // namespace fluidsound::sim
+}  // namespace fluidsound::io
