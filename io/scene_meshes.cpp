@@ -8,7 +8,7 @@
 
 #include "io/input_error.h"
 #include "io/mesh_file.h"
-#include "sim/fluid/solid_geometry.h"
+#include "sim/fluid/solid_rotation.h"
 
 namespace fluidsound::io {
 namespace {

@@ -78,11 +78,6 @@ double solidFractionOfSquare(double phi00, double phi10, double phi11, double ph
 std::array<Array3f, 3> faceOpenFractions(const Array3f& solidNodeDistance,
                                          const GridGeometry& grid);
 
-/// @brief `offset` turned by Euler angles [degrees] about x, then y, then z (fixed world axes):
-///        R·offset with R = Rz·Ry·Rx, as a solid's `rotate` turns its shape about its centre
-///        (docs/scene.md, "Placement of a solid").
-Vec3 rotateByEulerDegrees(const Vec3& offset, const Vec3& degrees);
-
 /// @brief Translation [m] of a kinematic solid's path at `time`: linear between keys, held at the
 ///        first key before it and at the last key after it; zero for an empty path.
 Vec3 pathTranslation(const std::vector<PathKey>& path, double time);
