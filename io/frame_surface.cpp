@@ -56,9 +56,8 @@ double FrameLevelSet::bandHalfWidth() const { return grid_->background; }
 
 double FrameLevelSet::voxelSize() const { return grid_->voxel; }
 
-std::unique_ptr<acoustics::FrameSurface> FrameFolderSurfaces::open(int frame) const {
-  return std::make_unique<acoustics::LevelSetFrameSurface>(
-      std::make_unique<FrameLevelSet>(outdir_ / "frames" / frameFileName(frame, "vdb")));
+std::unique_ptr<const acoustics::LevelSetSampler> FrameFolderLevelSets::open(int frame) const {
+  return std::make_unique<FrameLevelSet>(outdir_ / "frames" / frameFileName(frame, "vdb"));
 }
 
 }  // namespace fluidsound::io

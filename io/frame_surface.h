@@ -1,15 +1,14 @@
 // io/frame_surface.h — reading back a frame's liquid surface (frames/NNNN.vdb, grid `surface`)
-// for the transfer stage: the level set sampled at world points (acoustics::LevelSetSampler; the
-// local plane above a bubble is computed in acoustics/transfer/level_set_surface.h), and the
-// frames of an output folder as the stage's acoustics::FrameSurfaces.
+// for the transfer stage: the level set sampled at world points (acoustics::LevelSetSampler), and
+// the frames of an output folder as acoustics::LevelSetFrames (the local plane above a bubble is
+// the transfer stage's, acoustics/transfer/level_set_surface.h).
 #pragma once
 
 #include <filesystem>
 #include <memory>
 #include <utility>
 
-#include "acoustics/transfer/level_set_surface.h"
-#include "acoustics/transfer/transfer_stage.h"
+#include "acoustics/transfer/level_set_frames.h"
 
 namespace fluidsound::io {
 
@@ -33,12 +32,12 @@ class FrameLevelSet : public acoustics::LevelSetSampler {
 };
 
 /// The frames `fluidsound simulate` wrote into OUTDIR: frame f is OUTDIR/frames/NNNN.vdb, opened
-/// as an acoustics::LevelSetFrameSurface over its FrameLevelSet.
-class FrameFolderSurfaces : public acoustics::FrameSurfaces {
+/// as its FrameLevelSet.
+class FrameFolderLevelSets : public acoustics::LevelSetFrames {
  public:
-  explicit FrameFolderSurfaces(std::filesystem::path outdir) : outdir_(std::move(outdir)) {}
+  explicit FrameFolderLevelSets(std::filesystem::path outdir) : outdir_(std::move(outdir)) {}
   /// @throws InputError as FrameLevelSet's constructor
-  std::unique_ptr<acoustics::FrameSurface> open(int frame) const override;
+  std::unique_ptr<const acoustics::LevelSetSampler> open(int frame) const override;
 
  private:
   std::filesystem::path outdir_;

@@ -45,6 +45,9 @@ IO_RECORD_HEADERS = {
     "sim/fluid/mac_velocity.h": "a frame's velocity, written as frames/NNNN.vdb's `velocity`",
     "sim/fluid/particles.h": "a frame's particles, written as frames/NNNN.ply",
     "acoustics/bubble/bubble_track.h": "the bubble tracks of fluidsound.bubbles/1",
+    "sim/fluid/solid_rotation.h": "what a solid record's `rotate` means: io places mesh solids by it",
+    "acoustics/transfer/level_set_frames.h": "the frames' level sets as the transfer stage reads them: io implements it for frames/NNNN.vdb",
+    "acoustics/analysis/spectrogram_power.h": "the pooled spectrogram record that spectrogram.png draws",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')
 LINK_KEYWORDS = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE",

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "acoustics/transfer/level_set_surface.h"
 #include "acoustics/transfer/transfer_stage.h"
 #include "io/bubble_track_file.h"
 #include "io/frame_surface.h"
@@ -76,9 +77,11 @@ acoustics::BubbleTrackSet transferInFolder(const TransferOptions& o, const sim::
   io::requireWritableFolder(out / "transfer.report.json");
 
   StageProgress observer("transfer", "frames", o.common.quiet);
+  const io::FrameFolderLevelSets levelSets(out);
+  const acoustics::LevelSetFrameSurfaces frames(levelSets);
   acoustics::TransferResult result;
   try {
-    result = acoustics::computeTransfer(std::move(*tracks), io::FrameFolderSurfaces(out),
+    result = acoustics::computeTransfer(std::move(*tracks), frames,
                                         transferSetup(scene, o.model), observer);
   } catch (const acoustics::TransferInputError& e) {
     const bool aboutTracks = e.input() == acoustics::TransferInput::Tracks;

@@ -1,28 +1,17 @@
 // acoustics/transfer/level_set_surface.h — the free surface above a bubble as a local plane, from a
 // frame's liquid level set: the plane the image-source model (image_source_transfer.h) reflects in.
-// The level set comes through a small sampling interface, so this library reads no files
-// (io/frame_surface.h samples frames/NNNN.vdb). docs/transfer.md.
+// The level sets come through a small sampling interface (level_set_frames.h), so this library
+// reads no files (io/frame_surface.h samples frames/NNNN.vdb). docs/transfer.md.
 #pragma once
 
 #include <memory>
 #include <utility>
 
 #include "acoustics/transfer/image_source_transfer.h"
+#include "acoustics/transfer/level_set_frames.h"
 #include "acoustics/transfer/transfer_stage.h"
 
 namespace fluidsound::acoustics {
-
-/// A frame's liquid level set φ [m], negative in the liquid, sampled at world points.
-class LevelSetSampler {
- public:
-  virtual ~LevelSetSampler() = default;
-  /// φ at `x` [m], interpolated trilinearly from the voxels.
-  virtual double phi(const Vec3& x) const = 0;
-  /// |φ| outside the narrow band (the level set's background value) [m].
-  virtual double bandHalfWidth() const = 0;
-  /// The voxel size h [m], the step of the central-difference gradient.
-  virtual double voxelSize() const = 0;
-};
 
 /// @brief The free surface above a bubble as a plane: from the point `depth` above the centre
 ///        along `up` (the direction against gravity), the level set's gradient there (central
@@ -46,6 +35,19 @@ class LevelSetFrameSurface : public FrameSurface {
 
  private:
   std::unique_ptr<const LevelSetSampler> level_;
+};
+
+/// The frames of a sequence for the transfer stage: each frame's level set, opened by `frames`,
+/// as a LevelSetFrameSurface. `frames` must outlive it.
+class LevelSetFrameSurfaces : public FrameSurfaces {
+ public:
+  explicit LevelSetFrameSurfaces(const LevelSetFrames& frames) : frames_(frames) {}
+  std::unique_ptr<FrameSurface> open(int frame) const override {
+    return std::make_unique<LevelSetFrameSurface>(frames_.open(frame));
+  }
+
+ private:
+  const LevelSetFrames& frames_;
 };
 
 }  // namespace fluidsound::acoustics

@@ -61,10 +61,11 @@ double freeBoxDistance(const Box& b, const Vec3& x, const Array3f& solidNodes,
   return -depth;
 }
 
-/// The signed distance [m] from the centre of cell (i, j, k) to the free faces of region r
+/// The signed distance [m] from the centre of `cell` (i, j, k) to the free faces of region r
 /// (`mesh`: its node distance when it is a mesh, else null).
-double freeRegionDistance(const LiquidRegion& r, const MeshNodeDistance* mesh, int i, int j, int k,
+double freeRegionDistance(const LiquidRegion& r, const MeshNodeDistance* mesh, const Index3& cell,
                           const Array3f& solidNodes, const GridGeometry& grid) {
+  const auto [i, j, k] = cell;
   const Vec3 x = grid.cellCentre(i, j, k);
   if (const auto* box = std::get_if<Box>(&r.shape))
     return freeBoxDistance(*box, x, solidNodes, grid);
@@ -94,7 +95,7 @@ LiquidLevelSet::LiquidLevelSet(const FluidScene& scene, const GridGeometry& grid
         double region = kFarCells * grid.cellSize;
         for (std::size_t r = 0; r < scene.liquid.size(); ++r)
           region = std::min(
-              region, freeRegionDistance(scene.liquid[r], meshes[r], i, j, k, solidNodes, grid));
+              region, freeRegionDistance(scene.liquid[r], meshes[r], {i, j, k}, solidNodes, grid));
         // Inside a solid: air (the solid's own depth), the solid holds no liquid.
         const double solid = interpolateNodes(solidNodes, grid, x);
         phi_(i, j, k) = static_cast<float>(solid < 0.0 ? std::max(region, -solid) : region);

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "acoustics/transfer/level_set_surface.h"
 #include "io/frame_surface.h"
 #include "io/input_error.h"
 #include "tests/fuzz/fuzz_input.h"

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "acoustics/transfer/level_set_surface.h"
 #include "io/frame_files.h"
 #include "io/input_error.h"
 #include "sim/fluid/fluid_solver.h"
@@ -42,7 +43,8 @@ std::filesystem::path layerFrame(const test::TempFolder& folder) {
 TEST(FrameLevelSet, FlatLayerGivesAnUpwardPlaneAtTheSurface) {
   test::TempFolder folder;
   layerFrame(folder);
-  const FrameFolderSurfaces frames(folder.path());
+  const FrameFolderLevelSets levelSets(folder.path());
+  const acoustics::LevelSetFrameSurfaces frames(levelSets);
   const std::unique_ptr<acoustics::FrameSurface> surface = frames.open(0);
   for (const double y : {0.015, 0.025, 0.034}) {
     const Vec3 centre{0.05, y, 0.05};
