@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "support/file_bytes.h"
 #include "support/special_files.h"
 #include "support/temp_folder.h"
 
@@ -30,12 +31,7 @@ void writeText(const fs::path& path, const std::string& text) {
   ASSERT_TRUE(out.good()) << path;
 }
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::fileBytes;
 
 TEST(AtomicFile, TargetAppearsOnlyAfterCommit) {
   TempFolder folder;
@@ -49,7 +45,7 @@ TEST(AtomicFile, TargetAppearsOnlyAfterCommit) {
   writeText(file.temporaryPath(), "whole");
   EXPECT_FALSE(fs::exists(target));
   file.commit();
-  EXPECT_EQ(readText(target), "whole");
+  EXPECT_EQ(fileBytes(target), "whole");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
 }
 
@@ -82,12 +78,12 @@ TEST(AtomicFile, ExistingTargetIsUntouchedUntilCommit) {
     AtomicFile file(target);
     writeText(file.temporaryPath(), "new, abandoned");
   }
-  EXPECT_EQ(readText(target), "old");
+  EXPECT_EQ(fileBytes(target), "old");
   AtomicFile file(target);
   writeText(file.temporaryPath(), "new");
-  EXPECT_EQ(readText(target), "old");
+  EXPECT_EQ(fileBytes(target), "old");
   file.commit();
-  EXPECT_EQ(readText(target), "new");
+  EXPECT_EQ(fileBytes(target), "new");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
 }
 
@@ -172,7 +168,7 @@ TEST(AtomicFile, SymlinkTargetIsReplacedAndTheLinkStays) {
   writeText(file.temporaryPath(), "new");
   file.commit();
   EXPECT_TRUE(fs::is_symlink(link));
-  EXPECT_EQ(readText(target), "new");
+  EXPECT_EQ(fileBytes(target), "new");
 }
 
 }  // namespace

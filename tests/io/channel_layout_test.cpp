@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io/audio_file.h"
+#include "support/file_bytes.h"
 #include "support/temp_folder.h"
 
 namespace fluidsound::io {
@@ -25,10 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string fileBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::fileBytes;
 
 std::uint32_t le32(const std::string& b, std::size_t at) {
   return static_cast<std::uint32_t>(static_cast<unsigned char>(b[at])) |

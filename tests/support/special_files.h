@@ -16,6 +16,8 @@
 #include <string>
 #include <thread>
 
+#include "support/file_bytes.h"
+
 namespace fluidsound::test {
 
 /// Linux's memory devices (Documentation/admin-guide/devices.txt): 1,3 null; 1,7 full.
@@ -71,10 +73,5 @@ class FifoReader {
   std::string bytes_;
   std::thread thread_;
 };
-
-inline std::string fileBytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 }  // namespace fluidsound::test

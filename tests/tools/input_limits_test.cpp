@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "support/file_bytes.h"
 #include "support/command_runner.h"
 #include "support/temp_folder.h"
 
@@ -37,10 +38,7 @@ void writeFile(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-std::string fileBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
+using test::fileBytes;
 
 /// Runs `fluidsound ARGUMENTS < input` in `folder`; stdout is discarded.
 CommandOutcome runWithStandardInput(const fs::path& folder, const std::string& arguments,

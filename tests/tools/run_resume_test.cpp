@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "io/audio_file.h"
+#include "support/file_bytes.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
 #include "support/temp_folder.h"
@@ -28,13 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 nlohmann::json runStages(const fs::path& out) {
-  return nlohmann::json::parse(readText(out / "report.json"))["run"]["stages"];
+  return nlohmann::json::parse(fileBytes(out / "report.json"))["run"]["stages"];
 }
 
 /// One undisturbed run of the scene, shared by the tests (made once: each test copies it).
@@ -107,7 +103,7 @@ TEST_F(RunResume, AnIntactFolderReusesEveryStage) {
   const CommandOutcome r = run(out);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(stagesRun(out), "") << r.err;
-  EXPECT_EQ(readText(out / "fall.wav"), readText(reference() / "fall.wav"));
+  EXPECT_EQ(fileBytes(out / "fall.wav"), fileBytes(reference() / "fall.wav"));
 }
 
 // A truncated WAV was "up to date, reused". Only synth made it, so only synth runs again.
@@ -135,7 +131,7 @@ TEST_F(RunResume, ADeletedFrameIsSimulatedAgain) {
   EXPECT_EQ(stagesRun(out), "simulate transfer") << r.err;
   EXPECT_NE(r.err.find("run: simulate (frames/0003.vdb is missing)"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_regular_file(out / "frames" / "0003.vdb"));
-  EXPECT_EQ(readText(out / "bubbles.json"), readText(reference() / "bubbles.json"));
+  EXPECT_EQ(fileBytes(out / "bubbles.json"), fileBytes(reference() / "bubbles.json"));
   expectReferenceSamples(out);
   expectSettled(out);
 }
@@ -146,7 +142,7 @@ TEST_F(RunResume, ADeletedFrameIsSimulatedAgain) {
 TEST_F(RunResume, AnEditedBubbleFileIsSimulatedAgain) {
   const TempFolder folder;
   const fs::path out = copyOfReference(folder);
-  std::string bubbles = readText(out / "bubbles.json");
+  std::string bubbles = fileBytes(out / "bubbles.json");
   const std::size_t radius = bubbles.find("\"radius\":");
   ASSERT_NE(radius, std::string::npos);
   bubbles.replace(radius, 9, std::string("\"radius\":1"));  // 0.00… m becomes 10.00… m
@@ -155,7 +151,7 @@ TEST_F(RunResume, AnEditedBubbleFileIsSimulatedAgain) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(stagesRun(out), "simulate transfer") << r.err;
   EXPECT_NE(r.err.find("run: simulate (bubbles.json changed: "), std::string::npos) << r.err;
-  EXPECT_EQ(readText(out / "bubbles.json"), readText(reference() / "bubbles.json"));
+  EXPECT_EQ(fileBytes(out / "bubbles.json"), fileBytes(reference() / "bubbles.json"));
   expectReferenceSamples(out);
   expectSettled(out);
 }
@@ -171,7 +167,7 @@ TEST_F(RunResume, AChangedTransferReportRunsTransferOnce) {
   const CommandOutcome r = run(out);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(stagesRun(out), "transfer") << r.err;
-  EXPECT_EQ(readText(out / "bubbles.json"), readText(reference() / "bubbles.json"));
+  EXPECT_EQ(fileBytes(out / "bubbles.json"), fileBytes(reference() / "bubbles.json"));
   expectSettled(out);
 }
 
@@ -186,7 +182,7 @@ TEST_F(RunResume, ADamagedStageRecordIsNotTrusted) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(stagesRun(out), "simulate transfer synth") << r.err;
 
-  nlohmann::json stages = nlohmann::json::parse(readText(out / "stages.json"));
+  nlohmann::json stages = nlohmann::json::parse(fileBytes(out / "stages.json"));
   stages["stages"]["simulate"]["artefacts"].erase("frames/0007.vdb");
   std::ofstream(out / "stages.json") << stages.dump();
   fs::remove(out / "frames" / "0007.vdb");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/frame_folder.h"
+#include "support/file_bytes.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
 #include "support/temp_folder.h"
@@ -22,11 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 
 void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 /// OUTDIR as a 60-frame run with --ply left it (dummy contents: only the names matter).
 void writeSixtyFrameRun(const fs::path& out) {
@@ -59,11 +55,11 @@ TEST(SimulateStaleFrames, AnotherRunsFramesAreRemoved) {
     left.push_back(entry.path().filename().string());
   std::sort(left.begin(), left.end());
   EXPECT_EQ(left, (std::vector<std::string>{"0003.vdb", "0004.vdb", "0005.vdb", "notes.txt"}));
-  EXPECT_NE(readText(out / "frames" / "0004.vdb"), "frame of another run");
-  EXPECT_NE(readText(out / "bubbles.json"), "bubbles of another run");
-  EXPECT_EQ(readText(folder.path() / "precious.ply"), "not the simulation's")
+  EXPECT_NE(fileBytes(out / "frames" / "0004.vdb"), "frame of another run");
+  EXPECT_NE(fileBytes(out / "bubbles.json"), "bubbles of another run");
+  EXPECT_EQ(fileBytes(folder.path() / "precious.ply"), "not the simulation's")
       << "a link's target is not ours";
-  EXPECT_EQ(readText(out / "frames" / "notes.txt"), "my notes");
+  EXPECT_EQ(fileBytes(out / "frames" / "notes.txt"), "my notes");
   EXPECT_NE(r.err.find("removed 119 stale frame file(s) of another run"), std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("warning: " + (out / "frames").string() +
@@ -90,8 +86,8 @@ TEST(SimulateStaleFrames, AFifoWhereAFrameGoesIsRefused) {
                        "remove it or choose "
                        "another output folder\n");
   EXPECT_TRUE(fs::is_fifo(out / "frames" / "0004.vdb"));
-  EXPECT_EQ(readText(out / "frames" / "0060.ply"), "particles of another run");
-  EXPECT_EQ(readText(out / "bubbles.json"), "bubbles of another run");
+  EXPECT_EQ(fileBytes(out / "frames" / "0060.ply"), "particles of another run");
+  EXPECT_EQ(fileBytes(out / "bubbles.json"), "bubbles of another run");
   EXPECT_FALSE(fs::exists(out / "report.json"));
 }
 

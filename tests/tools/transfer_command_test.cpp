@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/file_bytes.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
 #include "support/temp_folder.h"
@@ -21,11 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kScene = kFallingColumnScene;
-
-std::string fileText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // Claim: the transfer stage writes the same bubbles.json, byte for byte, with 1, 2 or 3 threads
 // (each track sample belongs to one frame and is written by that frame's task alone), and it
@@ -43,7 +39,7 @@ TEST(TransferCommand, OutputDoesNotDependOnTheThreadCount) {
     const CommandOutcome transfer =
         runFluidsound({"transfer", scene.string(), "-o", out.string(), "--quiet", "--threads", threads});
     ASSERT_EQ(transfer.exitCode, 0) << transfer.err;
-    const std::string text = fileText(out / "bubbles.json");
+    const std::string text = fileBytes(out / "bubbles.json");
     if (reference.empty()) {
       reference = text;
       const nlohmann::json tracks = nlohmann::json::parse(text);
@@ -77,7 +73,7 @@ TEST(TransferCommand, CorruptFrameIsAOneLineInputError) {
   for (const auto& frame : fs::directory_iterator(out / "frames"))
     if (frame.path().extension() == ".vdb")
       fs::copy_file(corrupt, frame.path(), fs::copy_options::overwrite_existing);
-  const std::string tracks = fileText(out / "bubbles.json");
+  const std::string tracks = fileBytes(out / "bubbles.json");
   std::vector<fs::path> before;
   for (const auto& entry : fs::recursive_directory_iterator(out)) before.push_back(entry.path());
 
@@ -89,7 +85,7 @@ TEST(TransferCommand, CorruptFrameIsAOneLineInputError) {
             std::string::npos)
       << transfer.err;
   EXPECT_EQ(transfer.err.find('\n'), transfer.err.size() - 1) << transfer.err;
-  EXPECT_EQ(fileText(out / "bubbles.json"), tracks);
+  EXPECT_EQ(fileBytes(out / "bubbles.json"), tracks);
   std::vector<fs::path> after;
   for (const auto& entry : fs::recursive_directory_iterator(out)) after.push_back(entry.path());
   std::sort(before.begin(), before.end());

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/file_bytes.h"
 #include "support/command_runner.h"
 #include "support/falling_column_scene.h"
 #include "support/temp_folder.h"
@@ -19,11 +20,6 @@ namespace fluidsound::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string fileText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 void writeFile(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -48,8 +44,8 @@ TEST(TransferModel, ThermalSwitchChangesTheValues) {
   const CommandOutcome b =
       runFluidsound({"transfer", scene.string(), "-o", thermal.string(), "--quiet", "--thermal"});
   ASSERT_EQ(b.exitCode, 0) << b.err;
-  EXPECT_NE(fileText(base / "bubbles.json"), fileText(thermal / "bubbles.json"));
-  const nlohmann::json report = nlohmann::json::parse(fileText(thermal / "transfer.report.json"));
+  EXPECT_NE(fileBytes(base / "bubbles.json"), fileBytes(thermal / "bubbles.json"));
+  const nlohmann::json report = nlohmann::json::parse(fileBytes(thermal / "transfer.report.json"));
   EXPECT_EQ(report["settings"]["oscillator_model"]["polytropic"], "thermal");
 }
 
@@ -64,24 +60,24 @@ TEST(TransferModel, RunPassesItsModelToTransferAndSynth) {
   const CommandOutcome second =
       runFluidsound({"run", scene.string(), "-o", out.string(), "--quiet", "--thermal"});
   ASSERT_EQ(second.exitCode, 0) << second.err;
-  const nlohmann::json stages = nlohmann::json::parse(fileText(out / "report.json"))["run"]["stages"];
+  const nlohmann::json stages = nlohmann::json::parse(fileBytes(out / "report.json"))["run"]["stages"];
   EXPECT_TRUE(stages["simulate"]["reused"].get<bool>());
   EXPECT_FALSE(stages["transfer"]["reused"].get<bool>());
   EXPECT_FALSE(stages["synth"]["reused"].get<bool>());
   for (const char* report : {"transfer.report.json", "synth.report.json"})
-    EXPECT_EQ(nlohmann::json::parse(fileText(out / report))["settings"]["oscillator_model"]["polytropic"],
+    EXPECT_EQ(nlohmann::json::parse(fileBytes(out / report))["settings"]["oscillator_model"]["polytropic"],
               "thermal")
         << report;
 }
 
 /// Runs transfer on `out`, expecting exit 3 with `message` as its one line and the folder as it was.
 void expectTransferInputError(const fs::path& scene, const fs::path& out, const std::string& message) {
-  const std::string tracks = fileText(out / "bubbles.json");
+  const std::string tracks = fileBytes(out / "bubbles.json");
   const CommandOutcome transfer = runFluidsound({"transfer", scene.string(), "-o", out.string(), "--quiet"});
   EXPECT_EQ(transfer.exitCode, 3) << transfer.err;
   EXPECT_NE(transfer.err.find(message), std::string::npos) << transfer.err;
   EXPECT_EQ(transfer.err.find('\n'), transfer.err.size() - 1) << transfer.err;
-  EXPECT_EQ(fileText(out / "bubbles.json"), tracks);
+  EXPECT_EQ(fileBytes(out / "bubbles.json"), tracks);
   EXPECT_FALSE(fs::exists(out / "transfer.report.json"));
 }
 
@@ -90,7 +86,7 @@ TEST(TransferModel, SampleWithoutPositionNamesTheTracksFile) {
   const TempFolder folder;
   const fs::path scene = folder.path() / "fall.scene.json", out = folder.path() / "out";
   simulateInto(scene, out);
-  nlohmann::json tracks = nlohmann::json::parse(fileText(out / "bubbles.json"));
+  nlohmann::json tracks = nlohmann::json::parse(fileBytes(out / "bubbles.json"));
   ASSERT_FALSE(tracks["bubbles"].empty());
   tracks["bubbles"][0]["track"][0].erase("position");
   writeFile(out / "bubbles.json", tracks.dump());
@@ -105,7 +101,7 @@ TEST(TransferModel, ListenerOnABubbleNamesTheSceneFile) {
   const TempFolder folder;
   const fs::path scene = folder.path() / "fall.scene.json", out = folder.path() / "out";
   simulateInto(scene, out);
-  const nlohmann::json tracks = nlohmann::json::parse(fileText(out / "bubbles.json"));
+  const nlohmann::json tracks = nlohmann::json::parse(fileBytes(out / "bubbles.json"));
   ASSERT_FALSE(tracks["bubbles"].empty());
   nlohmann::json sceneJson = nlohmann::json::parse(kFallingColumnScene);
   sceneJson["listeners"][1]["position"] = tracks["bubbles"][0]["track"][0]["position"];
