@@ -53,6 +53,21 @@ struct TransferSetup {
   OscillatorModel model;  ///< gives ω of each bubble, the same model synthesis uses
 };
 
+/// What the geometric model's solves did (acoustics/transfer/geometric_transfer.h).
+struct GeometricTransferStats {
+  std::size_t reciprocalFrames = 0;  ///< frames solved once per band and listener
+  std::size_t adjointFrames = 0;     ///< frames solved once per sample
+  std::size_t widenedFrames = 0;     ///< reciprocal frames whose bands hit the band limit
+  std::size_t bands = 0;             ///< bands over all reciprocal frames
+  std::size_t factorisations = 0;    ///< sparse LU factorisations
+  std::size_t solves = 0;            ///< back-substitutions
+  std::size_t maxUnknowns = 0;       ///< liquid cells of the largest frame
+  std::size_t maxFactorNonZeros = 0; ///< entries of the largest factorisation
+  double maxFrequency = 0.0;         ///< highest sample frequency [Hz]
+  double solveSeconds = 0.0;         ///< summed over threads: assembly, factorisation, solves
+  bool operator==(const GeometricTransferStats&) const = default;
+};
+
 /// The filled tracks and what the stage did.
 struct TransferResult {
   BubbleTrackSet tracks;
@@ -60,12 +75,14 @@ struct TransferResult {
   std::size_t samples = 0;
   std::size_t framesRead = 0;
   double seconds = 0.0;  ///< wall-clock time of computeTransfer
+  GeometricTransferStats geometric;  ///< zero for the image-source model
 };
 
 /// Which input a TransferInputError is about.
 enum class TransferInput {
   Tracks,     ///< the bubble tracks (field e.g. "bubbles[3].track[2]")
   Listeners,  ///< the scene's listeners (field e.g. "listeners[1].position")
+  Options,    ///< the scene's "transfer" block (field e.g. "transfer.max_bands")
 };
 
 /// Bad input found by computeTransfer: the caller names the file (io::InputError). what() is
@@ -82,6 +99,18 @@ class TransferInputError : public std::invalid_argument {
  private:
   TransferInput input_;
   std::string field_, expected_, found_;
+};
+
+/// A frame whose water-side solve failed or gave a non-finite value. what() names the frame.
+class TransferSolveError : public std::runtime_error {
+ public:
+  TransferSolveError(int frame, const std::string& reason)
+      : std::runtime_error("transfer frame " + std::to_string(frame) + ": " + reason),
+        frame_(frame) {}
+  int frame() const { return frame_; }
+
+ private:
+  int frame_;
 };
 
 /// @brief Fills `transfer` (one value per listener) in every track sample. Per sample: the plane

@@ -1,0 +1,43 @@
+// acoustics/transfer/geometric_transfer.h — the transfer stage's geometric model (shared
+// transfer.md): every track sample's transfer through its frame's real liquid and solids, by
+// reciprocity. Per frame and listener: p_L on the surface from a unit source at the listener
+// (air side, first model: free field over a rigid liquid surface, rigid_surface_air_field.h), the
+// water-side Helmholtz solve (water_helmholtz.h), u read at every bubble. Either one solve per band
+// and listener for all the frame's bubbles (reciprocal route), or one per sample at its own
+// frequency (adjoint route), whichever needs fewer factorisations. docs/transfer.md.
+#pragma once
+
+#include <cstddef>
+
+#include "acoustics/transfer/transfer_stage.h"
+#include "acoustics/transfer/water_grid.h"
+
+namespace fluidsound::acoustics {
+
+/// Settings of the geometric model (the scene's "transfer" block).
+struct GeometricTransferOptions {
+  /// Upper limit of bands per frame, 2 … kMaxTransferBands: where the band rule asks for more,
+  /// the spacing widens to fit and the frame counts as widened in the stats.
+  int maxBands = 256;
+  /// η of k_w² = (ω/c_w)²(1 − iη), > 0 and ≤ 0.1. Default: 2ρ_a c_a/(ρ_w c_w), the order of the
+  /// energy a resonant water body radiates into air per radian (docs/transfer.md).
+  double lossFactor = 5.59e-4;
+  /// The band spacing's factor: Δf = bandSpacingFactor · c_a / (2π D), D the liquid's size
+  /// (shared transfer.md §2: 0.3).
+  double bandSpacingFactor = 0.3;
+};
+
+inline constexpr int kMaxTransferBands = 4096;
+
+/// @brief The geometric model's transfer, with the same contract as computeTransfer (transfer
+///        values, observer calls, errors, thread-count independence); result.geometric holds the
+///        solver statistics.
+/// @throws TransferInputError as computeTransfer, and for options out of range
+///         (TransferInput::Options, field "transfer.max_bands" or "transfer.loss_factor");
+///         TransferSolveError naming the frame when a solve fails or gives a non-finite value
+TransferResult computeGeometricTransfer(BubbleTrackSet tracks, const FrameWaterGrids& frames,
+                                        const TransferSetup& setup,
+                                        const GeometricTransferOptions& options,
+                                        StageObserver& observer);
+
+}  // namespace fluidsound::acoustics
