@@ -95,8 +95,8 @@ Complex depthFunction(Complex gammaSquared, double heightAboveFloor, double dept
   return (std::exp(q * (s - h)) + std::exp(-q * (s + h))) / (1.0 + std::exp(-2.0 * q * h));
 }
 
-Complex narrowTubePressure(Complex surfacePressure, Complex waterWavenumberSquared, double depthBelow,
-                           double depth) {
+Complex narrowTubePressure(Complex surfacePressure, Complex waterWavenumberSquared,
+                           double depthBelow, double depth) {
   return surfacePressure * depthFunction(waterWavenumberSquared, depth - depthBelow, depth);
 }
 
@@ -160,13 +160,15 @@ Complex BoxSeries::pressureAt(const Vec3& point) const {
 }
 
 double besselDerivativeZero(int order, int index) {
-  if (order < 0 || index < 1) throw std::invalid_argument("besselDerivativeZero: order ≥ 0, index ≥ 1");
+  if (order < 0 || index < 1)
+    throw std::invalid_argument("besselDerivativeZero: order ≥ 0, index ≥ 1");
   const double upper = order + 4.0 * index + 10.0;  // j'_mn < m + πn + 2 for every m, n
   const std::vector<double> zeros = besselDerivativeZeros(order, upper);
   return zeros.at(static_cast<std::size_t>(index) - 1);
 }
 
-CylinderSeries::CylinderSeries(const CylindricalWater& water, const SurfacePressure& surfacePressure,
+CylinderSeries::CylinderSeries(const CylindricalWater& water,
+                               const SurfacePressure& surfacePressure,
                                Complex waterWavenumberSquared, const BesselResolution& resolution)
     : water_(water), wavenumberSquared_(waterWavenumberSquared) {
   const double a = water.radius;
@@ -200,8 +202,9 @@ CylinderSeries::CylinderSeries(const CylindricalWater& water, const SurfacePress
                       radii[i] * weights[i];
       }
       const double jm = std::cyl_bessel_j(am, zero);
-      const double norm = zero == 0.0 ? 0.5 * a * a
-                                      : 0.5 * a * a * (1.0 - double(am * am) / (zero * zero)) * jm * jm;
+      const double norm = zero == 0.0
+                              ? 0.5 * a * a
+                              : 0.5 * a * a * (1.0 - double(am * am) / (zero * zero)) * jm * jm;
       modes_.push_back({m, alpha, projection / norm});
     }
   }

@@ -29,8 +29,8 @@ Complex depthFunction(Complex gammaSquared, double heightAboveFloor, double dept
 /// @brief Narrow-tube limit (shared transfer.md §3): uniform p_L = A on the surface of water of
 ///        depth h over a rigid floor, rigid side walls: u = A cos(k_w(h − d))/cos(k_w h) at depth
 ///        d below the surface. Exact for any tank cross-section when p_L is uniform.
-Complex narrowTubePressure(Complex surfacePressure, Complex waterWavenumberSquared, double depthBelow,
-                           double depth);
+Complex narrowTubePressure(Complex surfacePressure, Complex waterWavenumberSquared,
+                           double depthBelow, double depth);
 
 /// A rectangular box of water: rigid walls x = xMin, xMax, z = zMin, zMax and floor, the free
 /// surface y = surfaceHeight.
@@ -42,8 +42,8 @@ struct RectangularWater {
 
 /// Modes and quadrature of a series.
 struct SeriesResolution {
-  int modes = 96;               ///< cosine modes per horizontal axis (rectangle), or max order m
-  int quadraturePoints = 512;   ///< midpoint-rule points per axis for the projection of p_L
+  int modes = 96;              ///< cosine modes per horizontal axis (rectangle), or max order m
+  int quadraturePoints = 512;  ///< midpoint-rule points per axis for the projection of p_L
 };
 
 /// @brief The rectangular box's exact solution as a cosine-mode series (separation of variables):

@@ -36,9 +36,9 @@ acoustics::WaterGrid waterGridFromSolid(const WaterGridFrame& frame, double surf
 /// ±x, ±z sides (rigid), the surface at y = depth, `airCells` cell layers of air above it up to
 /// the open +y side. Width and length must be whole numbers of cells.
 struct WaterBoxShape {
-  double width = 0.1;   ///< L_x [m]
-  double depth = 0.07;  ///< H [m], floor to surface
-  double length = 0.02; ///< L_z [m]
+  double width = 0.1;    ///< L_x [m]
+  double depth = 0.07;   ///< H [m], floor to surface
+  double length = 0.02;  ///< L_z [m]
   double cellSize = 0.005;
   int airCells = 2;
 };

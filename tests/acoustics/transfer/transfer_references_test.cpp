@@ -55,7 +55,8 @@ TEST(TransferReferences, SeriesWithUniformSurfacePressureAreTheNarrowTubeForm) {
   const CylinderSeries cylinder({0.0, 0.0, 0.05, -0.1, 0.0}, uniform, k2, {4, 30.0, 48, 16});
   for (const double d : {0.0, 0.01, 0.05, 0.069}) {
     const Complex tubeBox = narrowTubePressure(a, k2, d, 0.07);
-    EXPECT_LT(std::abs(box.pressureAt({0.031, 0.07 - d, 0.007}) - tubeBox), 1e-10 * std::abs(tubeBox));
+    EXPECT_LT(std::abs(box.pressureAt({0.031, 0.07 - d, 0.007}) - tubeBox),
+              1e-10 * std::abs(tubeBox));
     const Complex tubeCylinder = narrowTubePressure(a, k2, d, 0.1);
     EXPECT_LT(std::abs(cylinder.pressureAt({0.02, -d, -0.01}) - tubeCylinder),
               1e-10 * std::abs(tubeCylinder));

@@ -56,7 +56,9 @@ std::vector<Complex> reciprocalPressures(const WaterHelmholtz& water, double ome
 
 /// p_L of the listener on the plane y = surface, as the references take it.
 test::SurfacePressure surfacePressure(double surface, const Vec3& listener, double omega) {
-  return [=](double x, double z) { return rigidSurfaceAirPressure({x, surface, z}, listener, omega, kAir); };
+  return [=](double x, double z) {
+    return rigidSurfaceAirPressure({x, surface, z}, listener, omega, kAir);
+  };
 }
 
 double relativeError(Complex value, Complex reference) {
@@ -105,13 +107,16 @@ FlatErrors flatSurfaceErrors(double cellSize) {
       const double closed = airTransfer(omega, d, 1.0, theta, kWater, kAir);
       const double error = relativeError(u[b], reference);
       errors.worst = std::max(errors.worst, error);
-      errors.worstAgainstClosedForm = std::max(errors.worstAgainstClosedForm, std::abs(grid / closed - 1.0));
-      std::printf("flat h=%.4f theta=%4.0f d=%.2f: T grid %.6e box series %.6e (err %.3f %%)"
-                  " E(theta) closed form %.6e (box/closed %.3f)\n",
-                  cellSize, degrees, d, grid, exact, 100.0 * error, closed, exact / closed);
+      errors.worstAgainstClosedForm =
+          std::max(errors.worstAgainstClosedForm, std::abs(grid / closed - 1.0));
+      std::printf(
+          "flat h=%.4f theta=%4.0f d=%.2f: T grid %.6e box series %.6e (err %.3f %%)"
+          " E(theta) closed form %.6e (box/closed %.3f)\n",
+          cellSize, degrees, d, grid, exact, 100.0 * error, closed, exact / closed);
     }
   }
-  std::printf("flat h=%.4f: %zu unknowns, %.2f s\n", cellSize, water.unknowns(), secondsSince(start));
+  std::printf("flat h=%.4f: %zu unknowns, %.2f s\n", cellSize, water.unknowns(),
+              secondsSince(start));
   return errors;
 }
 
@@ -213,7 +218,9 @@ TEST(WaterHelmholtz, CylindricalTankFirstResonanceIsAQuarterWave) {
   const Vec3 bubble{0.0, -0.05, 0.0}, listener{0.0, 1.0, 0.0};
   const double expected = kWater.soundSpeed / (4.0 * 0.10);
   const double found = peakFrequency(
-      [&](double f) { return std::abs(reciprocalPressures(water, angular(f), listener, {bubble})[0]); },
+      [&](double f) {
+        return std::abs(reciprocalPressures(water, angular(f), listener, {bubble})[0]);
+      },
       0.85 * expected, 1.15 * expected, 1.0);
   std::printf("cylinder resonance: %.1f Hz vs c_w/(4h) %.1f Hz, err %.3f %%, %.2f s\n", found,
               expected, 100.0 * (found / expected - 1.0), secondsSince(start));
@@ -225,14 +232,19 @@ TEST(WaterHelmholtz, CylindricalTankFirstResonanceIsAQuarterWave) {
 TEST(WaterHelmholtz, HemisphericalBowlFirstResonanceIsTheNeumannBallsFirstOddMode) {
   const auto start = std::chrono::steady_clock::now();
   const double a = 0.05, h = 0.005;
-  const WaterHelmholtz water(test::hemisphericalBowl({a, a, 0.0, h, 1, 2, 0.3}), kWater.soundSpeed, kLoss);
+  const WaterHelmholtz water(test::hemisphericalBowl({a, a, 0.0, h, 1, 2, 0.3}), kWater.soundSpeed,
+                             kLoss);
   const Vec3 bubble{0.0, -0.02, 0.0}, listener{0.0, 1.0, 0.0};
-  const double expected = test::hemisphericalBowlFirstResonance() * kWater.soundSpeed / (2.0 * kPi * a);
+  const double expected =
+      test::hemisphericalBowlFirstResonance() * kWater.soundSpeed / (2.0 * kPi * a);
   const double found = peakFrequency(
-      [&](double f) { return std::abs(reciprocalPressures(water, angular(f), listener, {bubble})[0]); },
+      [&](double f) {
+        return std::abs(reciprocalPressures(water, angular(f), listener, {bubble})[0]);
+      },
       0.9 * expected, 1.1 * expected, 4.0);
-  std::printf("bowl resonance (h=%.4f): %.1f Hz vs ka=2.0816 %.1f Hz, err %.3f %%, %zu unknowns, %.2f s\n",
-              h, found, expected, 100.0 * (found / expected - 1.0), water.unknowns(), secondsSince(start));
+  std::printf(
+      "bowl resonance (h=%.4f): %.1f Hz vs ka=2.0816 %.1f Hz, err %.3f %%, %zu unknowns, %.2f s\n",
+      h, found, expected, 100.0 * (found / expected - 1.0), water.unknowns(), secondsSince(start));
   EXPECT_NEAR(found / expected, 1.0, 0.03);
 }
 
@@ -268,8 +280,9 @@ TEST(WaterHelmholtz, ForwardAdjointAndReciprocalRoutesAgree) {
     // A uniform p_L = 1: Σ weights is u of the narrow-tube field, 1 + O(k_w² H d) at 3 kHz.
     Complex total = 0.0;
     for (const Complex& w : weights) total += w;
-    const Complex tube = test::narrowTubePressure(1.0, test::lossyWavenumberSquared(omega, kWater.soundSpeed, kLoss),
-                                                  kBoxDepth - bubble[1], kBoxDepth);
+    const Complex tube =
+        test::narrowTubePressure(1.0, test::lossyWavenumberSquared(omega, kWater.soundSpeed, kLoss),
+                                 kBoxDepth - bubble[1], kBoxDepth);
     EXPECT_LT(std::abs(total - tube), 0.02 * std::abs(tube));
   }
 }
