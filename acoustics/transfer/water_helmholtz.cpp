@@ -50,8 +50,9 @@ struct WaterHelmholtz::Impl {
     return i >= 0 && j >= 0 && k >= 0 && i < grid.cells[0] && j < grid.cells[1] &&
            k < grid.cells[2];
   }
-  /// Mean open fraction of the cell's six faces: its open volume fraction.
+  /// The cell's open volume fraction: given, else the mean of its six faces' fractions.
   double cellOpen(int i, int j, int k) const {
+    if (!grid.cellOpen.empty()) return grid.cellOpen[grid.cellIndex(i, j, k)];
     double sum = 0.0;
     for (int a = 0; a < 3; ++a) {
       std::array<int, 3> c{i, j, k};
@@ -223,6 +224,9 @@ WaterHelmholtz::WaterHelmholtz(const WaterGrid& grid, double soundSpeed, double 
                                   std::to_string(grid.faceOpen[a].size()) + " values for " +
                                   std::to_string(faces) + " faces");
   }
+  if (!grid.cellOpen.empty() && grid.cellOpen.size() != grid.cellCount())
+    throw std::invalid_argument("water grid: cellOpen has " + std::to_string(grid.cellOpen.size()) +
+                                " values for " + std::to_string(grid.cellCount()) + " cells");
   if (!(soundSpeed > 0.0) || !(lossFactor >= 0.0))
     throw std::invalid_argument("water grid: sound speed and loss factor must be positive");
   impl_->grid = grid;

@@ -96,6 +96,24 @@ acoustics::WaterGrid waterGridFromSolid(const WaterGridFrame& frame, double surf
       }
     }
   }
+  // The open volume of each cell, by the same sampling in three dimensions.
+  grid.cellOpen.resize(grid.cellCount());
+  const double h = grid.cellSize;
+  for (int k = 0; k < grid.cells[2]; ++k)
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i) {
+        int outside = 0;
+        for (int c = 0; c < samplesPerSide; ++c)
+          for (int b = 0; b < samplesPerSide; ++b)
+            for (int a = 0; a < samplesPerSide; ++a) {
+              const Vec3 p{grid.origin[0] + (i + (a + 0.5) / samplesPerSide) * h,
+                           grid.origin[1] + (j + (b + 0.5) / samplesPerSide) * h,
+                           grid.origin[2] + (k + (c + 0.5) / samplesPerSide) * h};
+              outside += solid(p) > 0.0 ? 1 : 0;
+            }
+        grid.cellOpen[grid.cellIndex(i, j, k)] =
+            static_cast<float>(outside) / (samplesPerSide * samplesPerSide * samplesPerSide);
+      }
   return grid;
 }
 
