@@ -1,0 +1,190 @@
+// tests/acoustics/transfer/geometric_transfer_test.cpp — the geometric model as a stage: its two
+// routes agree, band interpolation holds its tolerance, the values are finite, non-negative and
+// thread-count independent, and bad options or a failing solve are errors naming the field or
+// the frame (issue 19; shared transfer.md §1–2).
+#include "acoustics/transfer/geometric_transfer.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <limits>
+
+#include "acoustics/transfer/water_helmholtz.h"
+#include "tests/support/water_grid_shapes.h"
+
+namespace fluidsound::acoustics {
+namespace {
+
+/// Every frame is the same 10 × 7 × 2 cm box of water at 5 mm cells, surface at y = 7 cm.
+class BoxFrames : public FrameWaterGrids {
+ public:
+  explicit BoxFrames(WaterGrid grid) : grid_(std::move(grid)) {}
+  WaterGrid open(int) const override { return grid_; }
+
+ private:
+  WaterGrid grid_;
+};
+
+WaterGrid box() { return test::waterBox({0.1, 0.07, 0.02, 0.005, 2}); }
+
+class QuietObserver : public StageObserver {
+ public:
+  void started(double) override {}
+  void progress(double) override {}
+  bool wasInterrupted() override { return false; }
+};
+
+TransferSetup setupWithTwoListeners() {
+  TransferSetup setup;
+  setup.listeners = {{"above", {0.05, 0.6, 0.01}}, {"aside", {0.6, 0.3, 0.01}}};
+  setup.fps = 30.0;
+  setup.lastFrame = 10;
+  return setup;
+}
+
+/// One bubble per radius, each with one sample in frame 0 at a depth of 2 cm.
+BubbleTrackSet bubblesOfRadii(const std::vector<double>& radii) {
+  BubbleTrackSet tracks;
+  tracks.listeners = {"above", "aside"};
+  for (std::size_t b = 0; b < radii.size(); ++b) {
+    BubbleTrack bubble;
+    bubble.radius = radii[b];
+    TrackSample s;
+    s.depth = 0.02;
+    s.position = Vec3{0.03 + 0.004 * static_cast<double>(b % 10), 0.05, 0.01};
+    bubble.track.push_back(s);
+    tracks.bubbles.push_back(bubble);
+  }
+  return tracks;
+}
+
+TransferResult run(const BubbleTrackSet& tracks, const GeometricTransferOptions& options = {}) {
+  QuietObserver observer;
+  return computeGeometricTransfer(tracks, BoxFrames(box()), setupWithTwoListeners(), options,
+                                  observer);
+}
+
+// Reference: reciprocity (shared transfer.md §1) — the adjoint route and the reciprocal route
+// solve transposed systems of one complex-symmetric matrix, so at the same frequency they agree
+// to rounding. Many samples at one radius take the reciprocal route (one band); one sample alone
+// takes the adjoint route. Tolerance 1e-9 relative: LU back-substitution rounding.
+TEST(GeometricTransfer, ReciprocalAndAdjointRoutesAgreeAtTheSameFrequency) {
+  const TransferResult many = run(bubblesOfRadii(std::vector<double>(12, 1.5e-3)));
+  ASSERT_EQ(many.geometric.reciprocalFrames, 1u);
+  ASSERT_EQ(many.geometric.adjointFrames, 0u);
+  for (std::size_t b = 0; b < 12; ++b) {
+    BubbleTrackSet one = bubblesOfRadii(std::vector<double>(12, 1.5e-3));
+    one.bubbles = {one.bubbles[b]};
+    const TransferResult alone = run(one);
+    ASSERT_EQ(alone.geometric.adjointFrames, 1u);
+    for (int l = 0; l < 2; ++l) {
+      const double reciprocal = many.tracks.bubbles[b].track[0].transfer[l];
+      const double adjoint = alone.tracks.bubbles[0].track[0].transfer[l];
+      EXPECT_NEAR(reciprocal / adjoint, 1.0, 1e-9) << "bubble " << b << " listener " << l;
+    }
+  }
+}
+
+// Reference: the adjoint route at each sample's own frequency. The reciprocal route reads
+// between bands spaced 0.3·c_a/(2πD) with the bulk phase to the liquid's centre factored out
+// (shared transfer.md §2: the phase step across the body ≤ 0.3 rad, a magnitude error ≤ 1 −
+// cos(0.15) ≈ 1.1 %). Tolerance 2 %.
+TEST(GeometricTransfer, BandInterpolationHoldsTheBandRulesTolerance) {
+  std::vector<double> radii;
+  for (int b = 0; b < 40; ++b) radii.push_back(1.0e-3 + 5.0e-5 * b);  // ≈ 3.3 … 1.1 kHz
+  const TransferResult banded = run(bubblesOfRadii(radii));
+  ASSERT_EQ(banded.geometric.reciprocalFrames, 1u);
+  ASSERT_GE(banded.geometric.bands, 2u);
+  for (std::size_t b = 0; b < radii.size(); b += 3) {
+    BubbleTrackSet one = bubblesOfRadii(radii);
+    one.bubbles = {one.bubbles[b]};
+    const TransferResult exact = run(one);
+    for (int l = 0; l < 2; ++l)
+      EXPECT_NEAR(banded.tracks.bubbles[b].track[0].transfer[l] /
+                      exact.tracks.bubbles[0].track[0].transfer[l],
+                  1.0, 0.02)
+          << "bubble " << b << " listener " << l;
+  }
+}
+
+TEST(GeometricTransfer, ValuesAreFiniteNonNegativeAndTheSameForOneAndTwoThreads) {
+  std::vector<double> radii;
+  for (int b = 0; b < 30; ++b) radii.push_back(0.5e-3 + 1.0e-4 * b);
+  BubbleTrackSet tracks = bubblesOfRadii(radii);
+  for (std::size_t b = 0; b < tracks.bubbles.size(); ++b)  // spread the samples over frames
+    tracks.bubbles[b].track[0].time = static_cast<double>(b % 9) / 30.0;
+  TransferResult one, two;
+  {
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+    one = run(tracks);
+  }
+  {
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
+    two = run(tracks);
+  }
+  EXPECT_EQ(one.tracks, two.tracks);
+  EXPECT_EQ(one.geometric.factorisations, two.geometric.factorisations);
+  for (const BubbleTrack& b : one.tracks.bubbles)
+    for (const double t : b.track[0].transfer) {
+      EXPECT_TRUE(std::isfinite(t));
+      EXPECT_GE(t, 0.0);
+    }
+  EXPECT_EQ(one.geometric.samplesOutsideLiquid, 0u);
+}
+
+TEST(GeometricTransfer, OptionsOutOfRangeNameTheirField) {
+  const BubbleTrackSet tracks = bubblesOfRadii({1e-3});
+  const auto fieldOf = [&](const GeometricTransferOptions& o) {
+    try {
+      run(tracks, o);
+    } catch (const TransferInputError& e) {
+      EXPECT_EQ(e.input(), TransferInput::Options);
+      return e.field();
+    }
+    return std::string("no error");
+  };
+  GeometricTransferOptions o;
+  o.maxBands = 1;
+  EXPECT_EQ(fieldOf(o), "transfer.max_bands");
+  o.maxBands = kMaxTransferBands + 1;
+  EXPECT_EQ(fieldOf(o), "transfer.max_bands");
+  o = {};
+  o.lossFactor = 0.0;
+  EXPECT_EQ(fieldOf(o), "transfer.loss_factor");
+  o.lossFactor = 0.2;
+  EXPECT_EQ(fieldOf(o), "transfer.loss_factor");
+  o.lossFactor = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(fieldOf(o), "transfer.loss_factor");
+}
+
+TEST(GeometricTransfer, AFailingSolveIsAnErrorNamingTheFrame) {
+  WaterGrid broken = box();
+  broken.faceOpen[1][broken.faceIndex(1, 5, 10, 1)] = std::numeric_limits<float>::quiet_NaN();
+  BubbleTrackSet tracks = bubblesOfRadii({1e-3});
+  tracks.bubbles[0].track[0].time = 4.0 / 30.0;
+  QuietObserver observer;
+  try {
+    computeGeometricTransfer(tracks, BoxFrames(broken), setupWithTwoListeners(), {}, observer);
+    ADD_FAILURE() << "no error";
+  } catch (const TransferSolveError& e) {
+    EXPECT_EQ(e.frame(), 4);
+    EXPECT_NE(std::string(e.what()).find("transfer frame 4"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GeometricTransfer, AListenerInTheLiquidIsAnInputError) {
+  BubbleTrackSet tracks = bubblesOfRadii({1e-3});
+  TransferSetup setup = setupWithTwoListeners();
+  setup.listeners[1].position = {0.05, 0.03, 0.01};
+  QuietObserver observer;
+  try {
+    computeGeometricTransfer(tracks, BoxFrames(box()), setup, {}, observer);
+    ADD_FAILURE() << "no error";
+  } catch (const TransferInputError& e) {
+    EXPECT_EQ(e.field(), "listeners[1].position");
+  }
+}
+
+}  // namespace
+}  // namespace fluidsound::acoustics
