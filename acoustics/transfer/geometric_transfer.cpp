@@ -22,6 +22,7 @@ struct FrameSample {
   std::size_t bubble = 0, sample = 0;
   double omega = 0.0;  ///< the bubble's natural angular frequency at the sample's depth [rad/s]
   PointSample stencil;
+  Vec3 surfacePoint{};  ///< the point `depth` above the bubble along `up` [m]
 };
 
 void checkOptions(const GeometricTransferOptions& o) {
@@ -68,8 +69,10 @@ std::vector<double> levelPlaneTransfer(const Vec3& centre, double depth, double 
 }
 
 /// The reciprocal route: one factorisation per band, one solve per band and listener; each
-/// sample interpolates between the two bands around its frequency, with the bulk phase
-/// e^{−ik_a R} to the liquid's centre factored out (shared transfer.md §2).
+/// sample interpolates between the two bands around its frequency, with the phase e^{−ik_a R}
+/// from the listener to the point above the bubble factored out (shared transfer.md §2 factors
+/// out the phase to the liquid's centre; the bubble's own surface point leaves only the phase
+/// differences across the surface near it, which vary slower with frequency).
 void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& samples,
                      const WaterHelmholtz& water, const TransferSetup& setup, int bands,
                      GeometricTransferStats& stats) {
@@ -77,7 +80,6 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
   for (const FrameSample& s : samples) lo = std::min(lo, s.omega), hi = std::max(hi, s.omega);
   const std::size_t listeners = setup.listeners.size(), count = samples.size();
   const double step = bands > 1 ? (hi - lo) / (bands - 1) : 0.0;
-  const Vec3 centre = water.liquidCentre();
   std::vector<Complex> values(static_cast<std::size_t>(bands) * listeners * count);
   for (int j = 0; j < bands; ++j) {
     const double omega = lo + j * step;
@@ -88,11 +90,13 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
       const std::vector<Complex> p = airPressures(water, x, omega, setup.air);
       const Eigen::VectorXcd u = factor->solve(water.rightHandSide(p));
       ++stats.solves;
-      const double bulk = omega / setup.air.soundSpeed *
-                          std::hypot(centre[0] - x[0], centre[1] - x[1], centre[2] - x[2]);
-      const Complex unphase = std::polar(1.0 / omega, bulk);
-      for (std::size_t s = 0; s < count; ++s)
-        values[(j * listeners + l) * count + s] = water.evaluate(samples[s].stencil, u, p) * unphase;
+      const double ka = omega / setup.air.soundSpeed;
+      for (std::size_t s = 0; s < count; ++s) {
+        const Vec3& y = samples[s].surfacePoint;
+        const double r = std::hypot(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
+        values[(j * listeners + l) * count + s] =
+            water.evaluate(samples[s].stencil, u, p) * std::polar(1.0 / omega, ka * r);
+      }
     }
   }
   for (std::size_t s = 0; s < count; ++s) {
@@ -169,7 +173,9 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
       ++stats.samplesOutsideLiquid;
       continue;
     }
-    samples.push_back({b, s, omega, std::move(stencil)});
+    Vec3 above = position;
+    for (int a = 0; a < 3; ++a) above[a] += sample.depth * setup.up[a];
+    samples.push_back({b, s, omega, std::move(stencil), above});
   }
   try {
     if (!samples.empty()) {
