@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
@@ -117,12 +116,8 @@ acoustics::TransferResult runTransferModel(const TransferChoice& choice,
   const std::optional<int> first = firstSampleFrame(tracks, setup);
   const double cell = first ? simulatedCellSize(solids, out, *first) : scene.domain.cell;
   const FrameFolderWaterGrids frames(solids, out, cell);
-#if FLUIDSOUND_HAS_GEOMETRIC_TRANSFER
   return acoustics::computeGeometricTransfer(std::move(tracks), frames, setup, choice.geometric,
                                              observer);
-#else  // temporary, until acoustics/transfer/geometric_transfer.cpp is merged (tools/CMakeLists.txt)
-  throw std::logic_error("the geometric transfer model is not built into this fluidsound");
-#endif
 }
 
 }  // namespace

@@ -8,11 +8,12 @@ namespace {
 
 /// The geometric model's solver statistics as report.json's results.geometric (docs/cli.md).
 nlohmann::ordered_json geometricStats(const acoustics::GeometricTransferStats& s) {
-  return {{"reciprocal_frames", s.reciprocalFrames}, {"adjoint_frames", s.adjointFrames},
-          {"widened_frames", s.widenedFrames},       {"bands", s.bands},
-          {"factorisations", s.factorisations},      {"solves", s.solves},
-          {"max_unknowns", s.maxUnknowns},           {"max_factor_non_zeros", s.maxFactorNonZeros},
-          {"max_frequency_hz", s.maxFrequency},      {"solve_seconds", s.solveSeconds}};
+  return {
+      {"reciprocal_frames", s.reciprocalFrames}, {"adjoint_frames", s.adjointFrames},
+      {"widened_frames", s.widenedFrames},       {"bands", s.bands},
+      {"factorisations", s.factorisations},      {"solves", s.solves},
+      {"max_unknowns", s.maxUnknowns},           {"samples_outside_liquid", s.samplesOutsideLiquid},
+      {"max_frequency_hz", s.maxFrequency},      {"solve_seconds", s.solveSeconds}};
 }
 
 }  // namespace

@@ -4,14 +4,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <map>
 #include <utility>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "acoustics/bubble/minnaert.h"
+#include "acoustics/transfer/frame_samples.h"
 
 namespace fluidsound::acoustics {
 
@@ -24,23 +20,6 @@ TransferInputError::TransferInputError(TransferInput input, std::string field, s
       found_(std::move(found)) {}
 
 namespace {
-
-/// (bubble, sample) indices of the samples of one frame.
-using FrameSamples = std::vector<std::pair<std::size_t, std::size_t>>;
-
-/// The samples of every frame that has any, in frame order, so that each frame is opened once.
-std::vector<std::pair<int, FrameSamples>> samplesByFrame(const BubbleTrackSet& tracks,
-                                                         const TransferSetup& setup) {
-  std::map<int, FrameSamples> samplesOfFrame;
-  for (std::size_t b = 0; b < tracks.bubbles.size(); ++b)
-    for (std::size_t s = 0; s < tracks.bubbles[b].track.size(); ++s) {
-      const double time = tracks.bubbles[b].track[s].time;
-      const int frame =
-          std::clamp(static_cast<int>(std::lround(time * setup.fps)), 0, setup.lastFrame);
-      samplesOfFrame[frame].emplace_back(b, s);
-    }
-  return {samplesOfFrame.begin(), samplesOfFrame.end()};
-}
 
 /// Signed distance [m] of `x` from `plane` along its normal: > 0 on the air side.
 double sideOf(const Vec3& x, const LocalSurface& plane) {
@@ -79,16 +58,12 @@ void transferOfFrame(BubbleTrackSet& tracks, int frame, const FrameSamples& samp
   for (const auto& [b, s] : samples) {
     BubbleTrack& bubble = tracks.bubbles[b];
     TrackSample& sample = bubble.track[s];
-    if (!sample.position)
-      throw TransferInputError(
-          TransferInput::Tracks,
-          "bubbles[" + std::to_string(b) + "].track[" + std::to_string(s) + "]",
-          "a position (written by fluidsound simulate)", "none");
-    const LocalSurface local = surface->surfaceAbove(*sample.position, sample.depth, setup.up);
+    const Vec3& position = samplePosition(tracks, b, s);
+    const LocalSurface local = surface->surfaceAbove(position, sample.depth, setup.up);
     const double pressure = ambientPressureAt(sample.depth, setup.liquid, setup.model);
     const double omega =
         naturalAngularFrequency(bubble.radius, pressure, setup.liquid, setup.model);
-    sample.transfer = sampleTransfer(*sample.position, sample.depth, local, omega, setup);
+    sample.transfer = sampleTransfer(position, sample.depth, local, omega, setup);
   }
 }
 
@@ -99,29 +74,9 @@ TransferResult computeTransfer(BubbleTrackSet tracks, const FrameSurfaces& frame
   const auto start = std::chrono::steady_clock::now();
   TransferResult result;
   const std::vector<std::pair<int, FrameSamples>> work = samplesByFrame(tracks, setup);
-  // Frames are independent (each sample belongs to one frame and is written by it alone), so they
-  // are read and evaluated in parallel, a chunk at a time. An error is kept per frame and the
-  // first in frame order is thrown, as a serial loop would.
-  std::vector<std::exception_ptr> errors(work.size());
-  observer.started(static_cast<double>(work.size()));
-  for (std::size_t first = 0; first < work.size(); first += kTransferFramesPerChunk) {
-    const std::size_t last = std::min(work.size(), first + kTransferFramesPerChunk);
-    if (observer.wasInterrupted())
-      throw StageInterrupted("transfer frame " + std::to_string(work[first].first));
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 1),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t f = r.begin(); f < r.end(); ++f) {
-                          try {
-                            transferOfFrame(tracks, work[f].first, work[f].second, frames, setup);
-                          } catch (...) {
-                            errors[f] = std::current_exception();
-                          }
-                        }
-                      });
-    for (std::size_t f = first; f < last; ++f)
-      if (errors[f]) std::rethrow_exception(errors[f]);
-    observer.progress(static_cast<double>(last) / work.size());
-  }
+  forEachFrameInChunks(work, observer, [&](std::size_t f) {
+    transferOfFrame(tracks, work[f].first, work[f].second, frames, setup);
+  });
   result.bubbles = tracks.bubbles.size();
   for (const auto& frame : work) result.samples += frame.second.size();
   result.framesRead = work.size();

@@ -62,8 +62,8 @@ struct GeometricTransferStats {
   std::size_t factorisations = 0;    ///< sparse LU factorisations
   std::size_t solves = 0;            ///< back-substitutions
   std::size_t maxUnknowns = 0;       ///< liquid cells of the largest frame
-  std::size_t maxFactorNonZeros = 0; ///< entries of the largest factorisation
   double maxFrequency = 0.0;         ///< highest sample frequency [Hz]
+  std::size_t samplesOutsideLiquid = 0;  ///< samples with no liquid cell around them: level plane
   double solveSeconds = 0.0;         ///< summed over threads: assembly, factorisation, solves
   bool operator==(const GeometricTransferStats&) const = default;
 };

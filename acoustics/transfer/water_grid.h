@@ -26,6 +26,10 @@ struct WaterGrid {
   /// x = origin + i·h between cells i−1 and i, so the array has one more entry along a
   /// (size (n_i+1)·n_j·n_k for a = 0, indexed i + (n_i+1)·(j + n_j·k)). Empty: every face open.
   std::array<std::vector<float>, 3> faceOpen;
+  /// Open volume fraction [0, 1] of each cell (size n_i·n_j·n_k): the mass of the −k_w² term,
+  /// which places a wall inside a cell where it is (a flat floor between two faces). Empty: the
+  /// mean of the cell's six face fractions.
+  std::vector<float> cellOpen;
   /// Grid sides in the order −x, +x, −y, +y, −z, +z: true when air lies beyond (liquid against
   /// that side meets air there), false when it is a rigid wall.
   std::array<bool, 6> openSides{true, true, true, true, true, true};

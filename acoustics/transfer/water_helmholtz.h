@@ -2,7 +2,7 @@
 // transfer.md §1–2): (∇² + k_w²) u = 0 in one frame's liquid, u = p_L on the free surface open to
 // the air (ghost fluid, Gibou et al. 2002, as the pressure projection does), u = 0 on enclosed air
 // pockets, ∂u/∂n = 0 on solids (the projection's variational face weights, Batty et al. 2007).
-// Assembled once per frame; factorised once per frequency (sparse LU, the operator is complex
+// Assembled once per frame; factorised once per frequency (UMFPACK sparse LU, the operator is complex
 // symmetric and indefinite above the first resonance). docs/transfer.md, "The geometric model".
 #pragma once
 
@@ -37,12 +37,6 @@ struct PointSample {
   std::vector<std::pair<int, double>> air;    ///< (air point index, weight)
 };
 
-/// Solver statistics of one factorisation.
-struct HelmholtzSolveStats {
-  std::size_t unknowns = 0;
-  std::size_t factorNonZeros = 0;  ///< entries of L + U
-};
-
 class HelmholtzFactor;
 
 /// One frame's water-side problem: the liquid cells, their weighted Laplacian with the ghost-fluid
@@ -65,6 +59,8 @@ class WaterHelmholtz {
   double liquidSize() const;
   /// Centre [m] of the liquid's bounding box.
   Vec3 liquidCentre() const;
+  /// Whether the cell holding `x` [m] is a liquid unknown.
+  bool inLiquid(const Vec3& x) const;
   /// The sample of u at `x` [m]; empty (no cells, no air) when no liquid cell is among its corners.
   PointSample sampleAt(const Vec3& x) const;
 
@@ -94,7 +90,6 @@ class HelmholtzFactor {
   Eigen::VectorXcd solve(const Eigen::VectorXcd& rhs) const;
   /// The adjoint source of a sample: K⁻ᵀ s = K⁻¹ s (K is complex symmetric).
   Eigen::VectorXcd adjoint(const PointSample& sample) const;
-  HelmholtzSolveStats stats() const;
 
  private:
   friend class WaterHelmholtz;
