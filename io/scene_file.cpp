@@ -19,6 +19,7 @@
 #include "io/render_limits.h"
 #include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
+#include "io/scene_transfer.h"
 #include "sim/fluid/fluid_scene.h"
 
 namespace fluidsound::io {
@@ -114,7 +115,7 @@ class SceneReader {
     check_.requireFormat(root, kFormatTag);
     check_.rejectUnknownKeys(root, "",
                              {"format", "domain", "gravity", "time", "seed", "liquid", "emitters",
-                              "solids", "listeners", "audio", "solver", "bubbles"});
+                              "solids", "listeners", "audio", "solver", "bubbles", "transfer"});
 
     sim::Scene scene;
     scene.domain =
@@ -164,6 +165,9 @@ class SceneReader {
     if (const json* bubbles =
             check_.optionalObject(root, "", "bubbles", "an object of bubble-model settings (docs/bubbles.md)"))
       scene.bubbles = readBubbleSettings(check_, *bubbles);
+    if (const json* transfer = check_.optionalObject(
+            root, "", "transfer", "an object of transfer-model settings (docs/transfer.md)"))
+      scene.transfer = readTransferSettings(check_, *transfer);
     requireRenderableLength(scene);
     requireSubstepBudget(scene);
     return scene;

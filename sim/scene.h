@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,12 +21,29 @@ struct Listener {
   bool operator==(const Listener&) const = default;
 };
 
+/// The acoustic transfer model the transfer stage uses (docs/transfer.md).
+enum class TransferModel {
+  Geometric,  ///< each frame's real liquid and solids, by reciprocity (the default)
+  Image,      ///< image source under a locally flat surface, no solids
+};
+
+/// The scene's optional "transfer" block (docs/scene.md). The numbers apply to the geometric
+/// model; empty means the model's own default (acoustics::GeometricTransferOptions), which the
+/// record does not repeat. The ranges are checked where the block is read (io/scene_file.cpp).
+struct TransferSettings {
+  TransferModel model = TransferModel::Geometric;
+  std::optional<int> maxBands;       ///< upper limit of bands per frame, 2 … 4096
+  std::optional<double> lossFactor;  ///< η of the water's k_w² = (ω/c_w)²(1 − iη), (0, 0.1]
+  bool operator==(const TransferSettings&) const = default;
+};
+
 /// A whole scene: the fluid's part and the rest.
 struct Scene : FluidScene {
   std::filesystem::path file;       ///< the scene file (for messages); paths inside are resolved
   std::vector<Listener> listeners;  ///< default: one listener 0.5 m above the domain centre
   double sampleRate = 48000.0;      ///< [Hz], the "audio" block
   BubbleSettings bubbles;           ///< the "bubbles" block (docs/bubbles.md); defaults if absent
+  TransferSettings transfer;        ///< the "transfer" block; defaults if absent
   bool operator==(const Scene&) const = default;
 };
 

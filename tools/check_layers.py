@@ -47,6 +47,7 @@ IO_RECORD_HEADERS = {
     "acoustics/bubble/bubble_track.h": "the bubble tracks of fluidsound.bubbles/1",
     "sim/fluid/solid_rotation.h": "what a solid record's `rotate` means: io places mesh solids by it",
     "acoustics/transfer/level_set_frames.h": "the frames' level sets as the transfer stage reads them: io implements it for frames/NNNN.vdb",
+    "acoustics/transfer/geometric_transfer.h": "the limit of the scene's transfer.max_bands (kMaxTransferBands), checked as the block is read",
     "acoustics/analysis/spectrogram_power.h": "the pooled spectrogram record that spectrogram.png draws",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <oneapi/tbb/global_control.h>
 
+#include "acoustics/transfer/transfer_stage.h"
 #include "io/input_error.h"
 #include "io/interruption.h"
 #include "sim/fluid/simulation_failure.h"
@@ -92,6 +93,9 @@ int main(int argc, char** argv) {
     return kExitOutputFailed;
   } catch (const fluidsound::sim::SimulationFailure& e) {
     std::fprintf(stderr, "fluidsound: simulation failed: %s\n", e.what());
+    return kExitSimulationFailed;
+  } catch (const fluidsound::acoustics::TransferSolveError& e) {
+    std::fprintf(stderr, "fluidsound: transfer failed: %s\n", e.what());
     return kExitSimulationFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fluidsound: internal error: %s\n", e.what());

@@ -5,6 +5,7 @@
 
 #include "tools/cell_option.h"
 #include "tools/run_pipeline.h"
+#include "tools/transfer_choice.h"
 
 namespace fluidsound::tools {
 
@@ -16,6 +17,7 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
   c->add_flag("--fresh", o.fresh, "run every stage again, even if its artefacts are up to date");
   addCellOption(*c, o.cell);
   addAudioOutputOptions(*c, o.audio);
+  addTransferModelOption(*c, o.transfer);
   addOscillatorModelOptions(*c, o.model);
   addCommonOptions(*c, o.common);
   return c;

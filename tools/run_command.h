@@ -7,6 +7,7 @@
 #include <string>
 
 #include "acoustics/bubble/oscillator_model.h"
+#include "sim/scene.h"
 #include "tools/audio_options.h"
 #include "tools/command_options.h"
 
@@ -20,6 +21,7 @@ struct RunOptions {
   std::optional<double> cell;  ///< --cell: grid cell size [m] replacing domain.cell
   AudioOutputOptions audio;    ///< synth's audio options, passed on to the synth stage
   acoustics::OscillatorModel model;  ///< the run's one model: transfer's ω, synth's oscillators
+  std::optional<sim::TransferModel> transfer;  ///< --transfer; empty: the scene's transfer.model
 };
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options);

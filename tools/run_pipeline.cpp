@@ -15,7 +15,9 @@
 #include "tools/simulate_command.h"
 #include "tools/solver_memory.h"
 #include "tools/synth_command.h"
+#include "tools/transfer_choice.h"
 #include "tools/transfer_command.h"
+#include "tools/transfer_report.h"
 
 namespace fluidsound::tools {
 
@@ -41,6 +43,8 @@ RunPipeline::RunPipeline(const RunOptions& o)
       scene_(checkedScene(o)),
       hash_(inputHash(scene_)),
       modelHash_(hash_ + " " + oscillatorModelFingerprint(o.model)),
+      transferHash_(modelHash_ + " " +
+                    transferChoiceFingerprint(transferChoice(scene_, o.transfer))),
       audioFile_(audioName(scene_.file, o.audio)),
       out_(o.output),
       frames_(frameFiles(scene_)),
@@ -86,14 +90,18 @@ void RunPipeline::simulate() {
 }
 
 void RunPipeline::transfer() {
-  const TransferOptions transfer{
-      .common = o_.common, .scene = o_.scene, .output = o_.output, .model = o_.model};
+  const TransferOptions transfer{.common = o_.common,
+                                 .scene = o_.scene,
+                                 .output = o_.output,
+                                 .model = o_.model,
+                                 .transfer = o_.transfer};
   std::vector<std::string> reads = frames_;
   reads.push_back("bubbles.json");
   const bool ran = runStage(
-      {"transfer", reads, {"bubbles.json", "transfer.report.json"}, modelHash_},
+      {"transfer", reads, {"bubbles.json", "transfer.report.json"}, transferHash_},
       [&] { tracks_ = transferInFolder(transfer, scene_, std::exchange(tracks_, std::nullopt)); });
   if (!ran) tracks_.reset();  // its bubbles.json holds the tracks, not simulate's in memory
+  transferReport_ = Json::parse(fileBytes(out_ / "transfer.report.json"), nullptr, false);
 }
 
 void RunPipeline::synth() {
@@ -125,6 +133,7 @@ void RunPipeline::writeReport() {
               {"audio", audioFile_},
               {"spectrogram", "spectrogram.png"},
               {"seconds", std::chrono::duration<double>(Clock::now() - start_).count()}};
+  run["transfer"] = transferSummary(transferReport_);
   addSynthSummary(run, synthReport_);
   run["spectrum"] = spectrumSummary(tracks, out_ / audioFile_, o_.audio.sampleRate);
   report_["run"] = run;

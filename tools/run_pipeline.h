@@ -33,8 +33,9 @@ class RunPipeline {
 
  private:
   /// One stage as stages.json records it: the files it reads and writes (relative to OUTDIR) and
-  /// its input hash: the scene's, for transfer also the oscillator model (it gives ω), for synth
-  /// the model and the audio options.
+  /// its input hash: the scene's, for transfer also the oscillator model (it gives ω) and the
+  /// transfer model with its settings (--transfer may override the scene's), for synth the
+  /// oscillator model and the audio options.
   struct StagePlan {
     const char* name;
     std::vector<std::string> reads, artefacts;
@@ -57,7 +58,7 @@ class RunPipeline {
   const RunOptions& o_;
   Clock::time_point start_;
   sim::Scene scene_;
-  std::string hash_, modelHash_, audioFile_;
+  std::string hash_, modelHash_, transferHash_, audioFile_;
   std::filesystem::path out_;
   std::vector<std::string> frames_;
   StageRecords records_;
@@ -67,7 +68,7 @@ class RunPipeline {
   /// The latest stage's tracks, while they are in memory; none after a reused stage, whose
   /// bubbles.json is then read.
   std::optional<acoustics::BubbleTrackSet> tracks_;
-  nlohmann::ordered_json synthReport_;
+  nlohmann::ordered_json transferReport_, synthReport_;
 };
 
 }  // namespace fluidsound::tools

@@ -131,7 +131,7 @@ std::string StageRecords::reasonToRun(const std::string& stage, const std::strin
   if (found == records_.end()) return "no record of it completing";
   const StageRecord& record = found->second;
   if (record.inputHash != inputHash)
-    return "its inputs changed (scene, meshes, cell size or program version)";
+    return "its inputs changed (scene, meshes, cell size, models or program version)";
   const auto self = std::find(order_.begin(), order_.end(), stage);
   for (const std::string& file : reads) {
     const auto read = record.reads.find(file);

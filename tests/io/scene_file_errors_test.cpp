@@ -316,7 +316,7 @@ TEST(SceneFile, UnknownTopLevelKeySuggestsTheClosestKnownKey) {
   document["gravty"] = {0, -9.81, 0};
   expectError(parseError(document.dump()), "gravty",
               "one of format, domain, gravity, time, seed, liquid, emitters, solids, listeners, "
-              "audio, solver, bubbles (did you mean 'gravity'?), found an unknown key");
+              "audio, solver, bubbles, transfer (did you mean 'gravity'?), found an unknown key");
 }
 
 TEST(SceneFile, UnknownKeyWithoutNearMatchListsTheKnownKeys) {

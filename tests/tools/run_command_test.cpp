@@ -74,6 +74,7 @@ nlohmann::json withoutTimings(nlohmann::json report) {
   report["settings"].erase("output");
   report["results"].erase("seconds");
   report["results"].erase("oscillator_samples_per_second");
+  if (report["results"].contains("geometric")) report["results"]["geometric"].erase("solve_seconds");
   if (report["results"].contains("frames"))
     for (auto& frame : report["results"]["frames"]) frame.erase("seconds");
   return report;

@@ -96,7 +96,9 @@ TEST(TransferModel, SampleWithoutPositionNamesTheTracksFile) {
                                "simulate), found none");
 }
 
-// Bad input: a listener moved onto a bubble's centre is named in the scene file (exit 3).
+// Bad input: a listener moved onto a bubble's centre is named in the scene file (exit 3). A rule
+// of the image-source model (its distance to the listener and the surface point), so the scene
+// asks for that model.
 TEST(TransferModel, ListenerOnABubbleNamesTheSceneFile) {
   const TempFolder folder;
   const fs::path scene = folder.path() / "fall.scene.json", out = folder.path() / "out";
@@ -105,6 +107,7 @@ TEST(TransferModel, ListenerOnABubbleNamesTheSceneFile) {
   ASSERT_FALSE(tracks["bubbles"].empty());
   nlohmann::json sceneJson = nlohmann::json::parse(kFallingColumnScene);
   sceneJson["listeners"][1]["position"] = tracks["bubbles"][0]["track"][0]["position"];
+  sceneJson["transfer"] = {{"model", "image"}};
   writeFile(scene, sceneJson.dump());
   expectTransferInputError(scene, out,
                            scene.string() +

@@ -1,0 +1,52 @@
+// io/scene_transfer.cpp — the scene's `transfer` block (see scene_transfer.h).
+#include "io/scene_transfer.h"
+
+#include <cstdint>
+#include <string>
+
+#include "acoustics/transfer/geometric_transfer.h"
+
+namespace fluidsound::io {
+namespace {
+
+/// Largest loss factor η: beyond 0.1 the "small physical loss" would damp the water body itself
+/// (docs/transfer.md), not only keep its resonances finite.
+constexpr double kMaxLossFactor = 0.1;
+constexpr std::uint64_t kMinBands = 2;
+
+sim::TransferModel transferModel(const JsonValidator& check, const nlohmann::json& value,
+                                 const std::string& path) {
+  std::string expected = R"("geometric" or "image")";
+  if (value.is_string()) {
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text == "geometric") return sim::TransferModel::Geometric;
+    if (text == "image") return sim::TransferModel::Image;
+    const std::string suggestion = closestKey(text, {"geometric", "image"}, true);
+    if (!suggestion.empty()) expected += " (did you mean " + quotedText(suggestion) + "?)";
+  }
+  check.fail(path, expected, describe(value));
+}
+
+}  // namespace
+
+sim::TransferSettings readTransferSettings(const JsonValidator& check,
+                                           const nlohmann::json& object) {
+  const std::string path = "transfer";
+  check.rejectUnknownKeys(object, path, {"model", "max_bands", "loss_factor"});
+  sim::TransferSettings s;
+  if (const nlohmann::json* model = findMember(object, "model"))
+    s.model = transferModel(check, *model, memberPath(path, "model"));
+  if (const nlohmann::json* bands = findMember(object, "max_bands")) {
+    const auto limit = static_cast<std::uint64_t>(acoustics::kMaxTransferBands);
+    s.maxBands = static_cast<int>(check.wholeNumber(
+        *bands, memberPath(path, "max_bands"),
+        "an integer from 2 to " + std::to_string(limit) + " (bands per frame)", kMinBands, limit));
+  }
+  if (const nlohmann::json* loss = findMember(object, "loss_factor"))
+    s.lossFactor = check.number(*loss, memberPath(path, "loss_factor"),
+                                "a number > 0 and <= 0.1 (the water's loss factor)",
+                                [](double v) { return v > 0 && v <= kMaxLossFactor; });
+  return s;
+}
+
+}  // namespace fluidsound::io
