@@ -51,6 +51,34 @@ FrameFolderWaterGrids::FrameFolderWaterGrids(const sim::Scene& scene, std::files
   rays_ = sim::SolidMeshRays(scene_.solids);
 }
 
+/// Each cell's open volume fraction: the share of 4³ points inside it where the scene solids'
+/// node distance (trilinear, negative inside a solid) is positive. The water side's −k² term
+/// weighs each cell by it, which places a floor between two faces where it is (docs/transfer.md).
+std::vector<float> FrameFolderWaterGrids::openVolumeFractions(const sim::Array3f& nodeDistance,
+                                                              const acoustics::WaterGrid& water) {
+  constexpr int n = 4;
+  std::vector<float> open(water.cellCount());
+  for (int k = 0; k < water.cells[2]; ++k)
+    for (int j = 0; j < water.cells[1]; ++j)
+      for (int i = 0; i < water.cells[0]; ++i) {
+        int outside = 0;
+        for (int c = 0; c < n; ++c)
+          for (int b = 0; b < n; ++b)
+            for (int a = 0; a < n; ++a) {
+              const double x = (a + 0.5) / n, y = (b + 0.5) / n, z = (c + 0.5) / n;
+              double d = 0.0;
+              for (int corner = 0; corner < 8; ++corner) {
+                const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
+                d += (di ? x : 1 - x) * (dj ? y : 1 - y) * (dk ? z : 1 - z) *
+                     nodeDistance(i + di, j + dj, k + dk);
+              }
+              outside += d > 0.0 ? 1 : 0;
+            }
+        open[water.cellIndex(i, j, k)] = static_cast<float>(outside) / (n * n * n);
+      }
+  return open;
+}
+
 acoustics::WaterGrid FrameFolderWaterGrids::open(int frame) const {
   const std::filesystem::path path = framePath(outdir_, frame);
   const io::FrameLevelSet levelSet(path);
@@ -74,6 +102,7 @@ acoustics::WaterGrid FrameFolderWaterGrids::open(int frame) const {
                                                          frame / scene_.time.fps, meshes_.solids);
   // sim::Array3 and WaterGrid index faces alike (x fastest, one more along the face's axis).
   for (int a = 0; a < 3; ++a) water.faceOpen[a] = solids.faceOpen[a].values();
+  water.cellOpen = openVolumeFractions(solids.sceneNodeDistance, water);
   water.openSides = scene_.domain.open;
   return water;
 }

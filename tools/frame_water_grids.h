@@ -43,6 +43,8 @@ class FrameFolderWaterGrids : public acoustics::FrameWaterGrids {
   const sim::GridGeometry& grid() const { return grid_; }
 
  private:
+  static std::vector<float> openVolumeFractions(const sim::Array3f& nodeDistance,
+                                                const acoustics::WaterGrid& water);
   sim::Scene scene_;  ///< at the simulation's cell size, its liquid regions dropped
   std::filesystem::path outdir_;
   sim::GridGeometry grid_;

@@ -69,6 +69,10 @@ TEST(FrameWaterGrids, BoxSolidClosesItsFacesAndTheLiquidIsNegative) {
     EXPECT_EQ(water.faceOpen[1][water.faceIndex(1, 6, 1, k)], 0.0f);
     EXPECT_EQ(water.faceOpen[1][water.faceIndex(1, 1, 1, k)], 1.0f);
     EXPECT_EQ(water.faceOpen[0][water.faceIndex(0, 2, 1, k)], 1.0f);
+    // The open volume: none inside the box (cell 6, 1), all of it in the water (cell 1, 1).
+    ASSERT_EQ(water.cellOpen.size(), water.cellCount());
+    EXPECT_EQ(water.cellOpen[water.cellIndex(6, 1, k)], 0.0f);
+    EXPECT_EQ(water.cellOpen[water.cellIndex(1, 1, k)], 1.0f);
   }
   EXPECT_EQ(water.openSides, (std::array<bool, 6>{false, false, false, true, false, false}));
 }
