@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/SparseCholesky>
 #include <Eigen/UmfPackSupport>
 
 namespace fluidsound::acoustics {
@@ -328,37 +330,75 @@ Complex WaterHelmholtz::evaluate(const PointSample& sample, const Eigen::VectorX
 }
 
 struct HelmholtzFactor::Impl {
-  // UMFPACK (SuiteSparse): 20–700× faster here than Eigen's SparseLU on these 3-D grids
-  // (docs/transfer.md, "Solver").
+  HelmholtzMethod method = HelmholtzMethod::Fast;
+  std::size_t unknowns = 0;
+  // UMFPACK (SuiteSparse): 20–700× faster here than Eigen's SparseLU on these 3-D grids.
   // UMFPACK's solve reads the matrix again (iterative refinement), and Eigen keeps pointers to
   // it: the factor owns its matrix.
   ComplexMatrix matrix;
   Eigen::UmfPackLU<ComplexMatrix> lu;
-  std::size_t unknowns = 0;
+  bool luReady = false;
+  // The fast method: a real LDLᵀ of the lossless operator L − Re(k²)M, the loss −i·Im(k²)M
+  // added back by iterative refinement.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  bool ldltReady = false;
+
+  void factoriseLu() {
+    lu.compute(matrix);
+    if (lu.info() != Eigen::Success)
+      throw std::runtime_error("the water-side factorisation failed (a singular operator)");
+    luReady = true;
+  }
+  Eigen::VectorXcd solveReal(const Eigen::VectorXcd& rhs) const {
+    const Eigen::VectorXd re = ldlt.solve(rhs.real().eval()), im = ldlt.solve(rhs.imag().eval());
+    Eigen::VectorXcd x(rhs.size());
+    x.real() = re;
+    x.imag() = im;
+    return x;
+  }
+  /// The fast solve, or nothing when its refinement does not converge (within ~η of a
+  /// resonance, or a broken-down pivot).
+  std::optional<Eigen::VectorXcd> solveRefined(const Eigen::VectorXcd& rhs) const {
+    if (!ldltReady) return std::nullopt;
+    const double target = kRefinementTolerance * rhs.norm();
+    Eigen::VectorXcd x = solveReal(rhs);
+    for (int iteration = 0; iteration < kMaxRefinements; ++iteration) {
+      if (!x.allFinite()) return std::nullopt;
+      const Eigen::VectorXcd residual = rhs - matrix * x;
+      if (residual.norm() <= target) return x;
+      x += solveReal(residual);
+    }
+    return std::nullopt;
+  }
 };
 
 HelmholtzFactor::HelmholtzFactor(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 HelmholtzFactor::~HelmholtzFactor() = default;
 
-std::unique_ptr<HelmholtzFactor> WaterHelmholtz::factorise(double angularFrequency) const {
+std::unique_ptr<HelmholtzFactor> WaterHelmholtz::factorise(double angularFrequency,
+                                                           HelmholtzMethod method) const {
   const double k = angularFrequency / impl_->soundSpeed;
   const Complex k2(k * k, -k * k * impl_->lossFactor);
   auto factor = std::make_unique<HelmholtzFactor::Impl>();
+  factor->method = method;
   ComplexMatrix& matrix = factor->matrix;
   matrix = impl_->laplacian.cast<Complex>();
   for (Eigen::Index i = 0; i < impl_->volume.size(); ++i)
     matrix.coeffRef(i, i) -= k2 * impl_->volume[i];
   factor->unknowns = unknowns();
-  if (unknowns() > 0) {
-    factor->lu.compute(matrix);
-    if (factor->lu.info() != Eigen::Success)
-      throw std::runtime_error("the water-side factorisation failed (a singular operator)");
+  if (unknowns() == 0) return std::unique_ptr<HelmholtzFactor>(new HelmholtzFactor(std::move(factor)));
+  if (method == HelmholtzMethod::Fast) {
+    factor->ldlt.compute(matrix.real());
+    factor->ldltReady = factor->ldlt.info() == Eigen::Success;
   }
+  if (!factor->ldltReady) factor->factoriseLu();
   return std::unique_ptr<HelmholtzFactor>(new HelmholtzFactor(std::move(factor)));
 }
 
 Eigen::VectorXcd HelmholtzFactor::solve(const Eigen::VectorXcd& rhs) const {
   if (impl_->unknowns == 0) return Eigen::VectorXcd();
+  if (std::optional<Eigen::VectorXcd> fast = impl_->solveRefined(rhs)) return *std::move(fast);
+  if (!impl_->luReady) impl_->factoriseLu();
   Eigen::VectorXcd u = impl_->lu.solve(rhs);
   if (impl_->lu.info() != Eigen::Success || !u.allFinite())
     throw std::runtime_error("the water-side solve gave a non-finite value");

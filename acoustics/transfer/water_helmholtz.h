@@ -39,6 +39,21 @@ struct PointSample {
 
 class HelmholtzFactor;
 
+/// How K(ω) is factorised; both give the same u to kRefinementTolerance (a test checks it).
+enum class HelmholtzMethod {
+  /// A real LDLᵀ (Eigen, AMD ordering) of the lossless operator with the loss added back by
+  /// iterative refinement; where that does not converge (within ~η of a resonance) the
+  /// reference LU. ~10× faster on the scenes' frames (docs/transfer.md, "Solver").
+  Fast,
+  /// The complex LU of K(ω) itself (UMFPACK).
+  Reference,
+};
+
+/// Relative residual ‖b − K u‖/‖b‖ at which the fast method's refinement stops.
+inline constexpr double kRefinementTolerance = 1e-12;
+/// Refinement steps before the fast method falls back to the LU.
+inline constexpr int kMaxRefinements = 8;
+
 /// One frame's water-side problem: the liquid cells, their weighted Laplacian with the ghost-fluid
 /// surface terms and the air points. Independent of frequency.
 class WaterHelmholtz {
@@ -65,7 +80,8 @@ class WaterHelmholtz {
   PointSample sampleAt(const Vec3& x) const;
 
   /// @brief Factorises K(ω) = L − k_w² M. @throws std::runtime_error when the factorisation fails
-  std::unique_ptr<HelmholtzFactor> factorise(double angularFrequency) const;
+  std::unique_ptr<HelmholtzFactor> factorise(double angularFrequency,
+                                             HelmholtzMethod method = HelmholtzMethod::Fast) const;
 
   /// The right-hand side B·p_L of the reciprocal solve from p_L at airPoints() (size must match).
   Eigen::VectorXcd rightHandSide(std::span<const Complex> airPressure) const;
@@ -78,6 +94,7 @@ class WaterHelmholtz {
 
  private:
   friend class HelmholtzFactor;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

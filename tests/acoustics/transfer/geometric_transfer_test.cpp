@@ -188,3 +188,26 @@ TEST(GeometricTransfer, AListenerInTheLiquidIsAnInputError) {
 
 }  // namespace
 }  // namespace fluidsound::acoustics
+
+namespace fluidsound::acoustics {
+namespace {
+
+// Reference: the complex LU of K(ω) itself (HelmholtzMethod::Reference). The fast method's real
+// LDLᵀ with refinement stops at a relative residual of kRefinementTolerance, so the two agree to
+// ~1e-12 times the condition; tolerance 1e-8. Frequencies: below, at (within the loss of) and
+// above the box's first resonance c_w/(4H) = 5.29 kHz, where the fast method falls back to the LU.
+TEST(WaterHelmholtzMethods, FastAndReferenceFactorisationsAgree) {
+  const WaterHelmholtz water(box(), 1482.0, 5.59e-4);
+  const PointSample sample = water.sampleAt({0.05, 0.05, 0.01});
+  ASSERT_FALSE(sample.cells.empty());
+  for (const double hertz : {800.0, 1482.0 / (4.0 * 0.07), 7000.0, 15000.0}) {
+    const double omega = 2.0 * 3.141592653589793 * hertz;
+    const Eigen::VectorXcd fast = water.factorise(omega, HelmholtzMethod::Fast)->adjoint(sample);
+    const Eigen::VectorXcd exact =
+        water.factorise(omega, HelmholtzMethod::Reference)->adjoint(sample);
+    EXPECT_LT((fast - exact).norm() / exact.norm(), 1e-8) << hertz << " Hz";
+  }
+}
+
+}  // namespace
+}  // namespace fluidsound::acoustics
