@@ -23,15 +23,16 @@ struct Listener {
 
 /// The acoustic transfer model the transfer stage uses (docs/transfer.md).
 enum class TransferModel {
-  Geometric,  ///< each frame's real liquid and solids, by reciprocity (the default)
-  Image,      ///< image source under a locally flat surface, no solids
+  Geometric,  ///< each frame's real liquid and solids, by reciprocity
+  Image,      ///< image source under a locally flat surface, no solids (the default for now:
+              ///< docs/transfer.md, "Choosing the model", says why)
 };
 
 /// The scene's optional "transfer" block (docs/scene.md). The numbers apply to the geometric
 /// model; empty means the model's own default (acoustics::GeometricTransferOptions), which the
 /// record does not repeat. The ranges are checked where the block is read (io/scene_file.cpp).
 struct TransferSettings {
-  TransferModel model = TransferModel::Geometric;
+  TransferModel model = TransferModel::Image;
   std::optional<int> maxBands;       ///< upper limit of bands per frame, 2 … 4096
   std::optional<double> lossFactor;  ///< η of the water's k_w² = (ω/c_w)²(1 − iη), (0, 0.1]
   bool operator==(const TransferSettings&) const = default;
