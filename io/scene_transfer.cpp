@@ -32,7 +32,7 @@ sim::TransferModel transferModel(const JsonValidator& check, const nlohmann::jso
 sim::TransferSettings readTransferSettings(const JsonValidator& check,
                                            const nlohmann::json& object) {
   const std::string path = "transfer";
-  check.rejectUnknownKeys(object, path, {"model", "max_bands", "loss_factor"});
+  check.rejectUnknownKeys(object, path, {"model", "max_bands", "loss_factor", "max_frequency"});
   sim::TransferSettings s;
   if (const nlohmann::json* model = findMember(object, "model"))
     s.model = transferModel(check, *model, memberPath(path, "model"));
@@ -46,6 +46,10 @@ sim::TransferSettings readTransferSettings(const JsonValidator& check,
     s.lossFactor = check.number(*loss, memberPath(path, "loss_factor"),
                                 "a number > 0 and <= 0.1 (the water's loss factor)",
                                 [](double v) { return v > 0 && v <= kMaxLossFactor; });
+  if (const nlohmann::json* limit = findMember(object, "max_frequency"))
+    s.maxFrequency = check.number(*limit, memberPath(path, "max_frequency"),
+                                  "a frequency > 0 and <= 100000 Hz (the geometric model's limit)",
+                                  [](double v) { return v > 0 && v <= acoustics::kMaxTransferFrequency; });
   return s;
 }
 

@@ -34,6 +34,7 @@ enum class TransferModel {
 struct TransferSettings {
   TransferModel model = TransferModel::Image;
   std::optional<int> maxBands;       ///< upper limit of bands per frame, 2 … 4096
+  std::optional<double> maxFrequency;  ///< [Hz], (0, 100000]; empty: the grid's limit c_a/(4h)
   std::optional<double> lossFactor;  ///< η of the water's k_w² = (ω/c_w)²(1 − iη), (0, 0.1]
   bool operator==(const TransferSettings&) const = default;
 };

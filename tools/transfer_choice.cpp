@@ -24,6 +24,7 @@ TransferChoice transferChoice(const sim::Scene& scene,
   choice.model = option.value_or(scene.transfer.model);
   if (scene.transfer.maxBands) choice.geometric.maxBands = *scene.transfer.maxBands;
   if (scene.transfer.lossFactor) choice.geometric.lossFactor = *scene.transfer.lossFactor;
+  if (scene.transfer.maxFrequency) choice.geometric.maxFrequency = *scene.transfer.maxFrequency;
   return choice;
 }
 
@@ -34,10 +35,11 @@ std::string transferModelName(sim::TransferModel model) {
 std::string transferChoiceFingerprint(const TransferChoice& choice) {
   if (choice.model == sim::TransferModel::Image) return "transfer image";
   const acoustics::GeometricTransferOptions& g = choice.geometric;
-  char text[160];
+  char text[224];
   std::snprintf(text, sizeof text,
-                "transfer geometric max-bands %d loss-factor %.17g band-spacing %.17g", g.maxBands,
-                g.lossFactor, g.bandSpacingFactor);
+                "transfer geometric max-bands %d loss-factor %.17g band-spacing %.17g "
+                "max-frequency %.17g",
+                g.maxBands, g.lossFactor, g.bandSpacingFactor, g.maxFrequency);
   return text;
 }
 

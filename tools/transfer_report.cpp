@@ -13,6 +13,7 @@ nlohmann::ordered_json geometricStats(const acoustics::GeometricTransferStats& s
       {"widened_frames", s.widenedFrames},       {"bands", s.bands},
       {"factorisations", s.factorisations},      {"solves", s.solves},
       {"max_unknowns", s.maxUnknowns},           {"samples_outside_liquid", s.samplesOutsideLiquid},
+      {"samples_above_limit", s.samplesAboveLimit},
       {"max_frequency_hz", s.maxFrequency},      {"solve_seconds", s.solveSeconds}};
 }
 
@@ -27,6 +28,7 @@ void addTransferResults(RunReport& report, const TransferOptions& o, const Trans
     report.setting("max_bands", choice.geometric.maxBands);
     report.setting("loss_factor", choice.geometric.lossFactor);
     report.setting("band_spacing_factor", choice.geometric.bandSpacingFactor);
+    report.setting("max_frequency_hz", choice.geometric.maxFrequency);
   }
   report.setOscillatorModel(o.model);
   report.result("bubbles", static_cast<double>(result.bubbles));

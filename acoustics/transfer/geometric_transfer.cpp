@@ -33,6 +33,11 @@ void checkOptions(const GeometricTransferOptions& o) {
   if (!(o.lossFactor > 0.0 && o.lossFactor <= 0.1))
     throw TransferInputError(TransferInput::Options, "transfer.loss_factor",
                              "a number in (0, 0.1]", std::to_string(o.lossFactor));
+  if (!(o.maxFrequency == 0.0 || (o.maxFrequency > 0.0 && o.maxFrequency <= kMaxTransferFrequency)))
+    throw TransferInputError(TransferInput::Options, "transfer.max_frequency",
+                             "0 (the grid's limit) or a frequency in (0, " +
+                                 std::to_string(static_cast<int>(kMaxTransferFrequency)) + "] Hz",
+                             std::to_string(o.maxFrequency));
   if (!(o.bandSpacingFactor > 0.0 && o.bandSpacingFactor <= 10.0))
     throw TransferInputError(TransferInput::Options, "transfer.band_spacing_factor",
                              "a number in (0, 10]", std::to_string(o.bandSpacingFactor));
@@ -159,6 +164,9 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
                                "a listener in air for the geometric model (--transfer image "
                                "hears a listener in water)",
                                "a point in frame " + std::to_string(frame) + "'s liquid");
+  const double limitHz = options.maxFrequency > 0.0
+                             ? options.maxFrequency
+                             : setup.air.soundSpeed / (4.0 * water.cellSize());
   std::vector<FrameSample> samples;
   for (const auto& [b, s] : work) {
     const Vec3& position = samplePosition(tracks, b, s);
@@ -167,6 +175,11 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
     const double omega =
         naturalAngularFrequency(tracks.bubbles[b].radius, pressure, setup.liquid, setup.model);
     stats.maxFrequency = std::max(stats.maxFrequency, omega / (2.0 * std::numbers::pi));
+    if (omega > 2.0 * std::numbers::pi * limitHz) {
+      sample.transfer = levelPlaneTransfer(position, sample.depth, omega, setup);
+      ++stats.samplesAboveLimit;
+      continue;
+    }
     PointSample stencil = water.sampleAt(position);
     if (stencil.cells.empty()) {
       sample.transfer = levelPlaneTransfer(position, sample.depth, omega, setup);
@@ -211,6 +224,7 @@ void addStats(GeometricTransferStats& total, const GeometricTransferStats& frame
   total.maxUnknowns = std::max(total.maxUnknowns, frame.maxUnknowns);
   total.maxFrequency = std::max(total.maxFrequency, frame.maxFrequency);
   total.samplesOutsideLiquid += frame.samplesOutsideLiquid;
+  total.samplesAboveLimit += frame.samplesAboveLimit;
   total.solveSeconds += frame.solveSeconds;
 }
 

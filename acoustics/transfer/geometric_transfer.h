@@ -25,7 +25,14 @@ struct GeometricTransferOptions {
   /// The band spacing's factor: Δf = bandSpacingFactor · c_a / (2π D), D the liquid's size
   /// (shared transfer.md §2: 0.3).
   double bandSpacingFactor = 0.3;
+  /// Highest sample frequency [Hz] the water grid answers; samples above it take the image-source
+  /// value under the level plane (counted). 0: the grid's own limit c_a/(4h), four surface
+  /// crossings per air wavelength (above it the crossings cannot sample p_L's phase). Else
+  /// > 0 and ≤ kMaxTransferFrequency.
+  double maxFrequency = 0.0;
 };
+
+inline constexpr double kMaxTransferFrequency = 100000.0;  // [Hz]
 
 inline constexpr int kMaxTransferBands = 4096;
 

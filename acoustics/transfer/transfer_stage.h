@@ -64,6 +64,7 @@ struct GeometricTransferStats {
   std::size_t maxUnknowns = 0;       ///< liquid cells of the largest frame
   double maxFrequency = 0.0;         ///< highest sample frequency [Hz]
   std::size_t samplesOutsideLiquid = 0;  ///< samples with no liquid cell around them: level plane
+  std::size_t samplesAboveLimit = 0;     ///< samples above the frequency limit: level plane
   double solveSeconds = 0.0;         ///< summed over threads: assembly, factorisation, solves
   bool operator==(const GeometricTransferStats&) const = default;
 };

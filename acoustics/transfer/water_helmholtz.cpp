@@ -242,6 +242,7 @@ WaterHelmholtz::~WaterHelmholtz() = default;
 WaterHelmholtz::WaterHelmholtz(WaterHelmholtz&&) noexcept = default;
 WaterHelmholtz& WaterHelmholtz::operator=(WaterHelmholtz&&) noexcept = default;
 
+double WaterHelmholtz::cellSize() const { return impl_->grid.cellSize; }
 std::size_t WaterHelmholtz::unknowns() const { return impl_->volume.size(); }
 const std::vector<AirPoint>& WaterHelmholtz::airPoints() const { return impl_->airPoints; }
 

@@ -67,6 +67,8 @@ class WaterHelmholtz {
   WaterHelmholtz& operator=(WaterHelmholtz&&) noexcept;
 
   std::size_t unknowns() const;
+  /// h [m] of the frame's grid.
+  double cellSize() const;
   /// Points where p_L is needed: every surface crossing, then every air cell centre next to the
   /// liquid (26-neighbourhood), in a fixed order (cell order, then axis).
   const std::vector<AirPoint>& airPoints() const;

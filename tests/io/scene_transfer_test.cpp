@@ -19,14 +19,15 @@ using namespace scene_test;
 /// minimalScene() with `transfer` set to the JSON text `block`.
 json withTransfer(const char* block) { return withChange(minimalScene(), "/transfer", block); }
 
-// Claim: model, max_bands and loss_factor land in Scene::transfer as written.
+// Claim: model, max_bands, loss_factor and max_frequency land in Scene::transfer as written.
 TEST(SceneTransfer, EveryFieldReachesItsRecord) {
   const sim::Scene scene =
-      parseScene(withTransfer(R"({"model": "image", "max_bands": 64, "loss_factor": 0.01})").dump(),
+      parseScene(withTransfer(R"({"model": "image", "max_bands": 64, "loss_factor": 0.01, "max_frequency": 8000})").dump(),
                  "tank.json");
   EXPECT_EQ(scene.transfer.model, sim::TransferModel::Image);
   EXPECT_EQ(scene.transfer.maxBands, 64);
   EXPECT_EQ(scene.transfer.lossFactor, 0.01);
+  EXPECT_EQ(scene.transfer.maxFrequency, 8000.0);
 }
 
 // Claim: without the block, or with an empty one, the model is the image-source one (the default
@@ -69,6 +70,7 @@ void PrintTo(const TransferCase& c, std::ostream* out) { *out << c.name; }
 const std::string kBands =
     "an integer from 2 to " + std::to_string(acoustics::kMaxTransferBands) + " (bands per frame)";
 const std::string kLoss = "a number > 0 and <= 0.1 (the water's loss factor)";
+const std::string kLimit = "a frequency > 0 and <= 100000 Hz (the geometric model's limit)";
 const std::string kModels = R"("geometric" or "image")";
 
 const std::vector<TransferCase> kTransferCases = {
@@ -85,8 +87,11 @@ const std::vector<TransferCase> kTransferCases = {
     {"zero_loss", R"({"loss_factor": 0})", "transfer.loss_factor", kLoss, "0"},
     {"loss_too_large", R"({"loss_factor": 0.2})", "transfer.loss_factor", kLoss, "0.2"},
     {"negative_loss", R"({"loss_factor": -0.001})", "transfer.loss_factor", kLoss, "-0.001"},
+    {"zero_limit", R"({"max_frequency": 0})", "transfer.max_frequency", kLimit, "0"},
+    {"limit_too_high", R"({"max_frequency": 200001})", "transfer.max_frequency", kLimit, "200001"},
     {"unknown_key", R"({"maxBands": 64})", "transfer.maxBands",
-     "one of model, max_bands, loss_factor (did you mean 'max_bands'?)", "an unknown key"},
+     "one of model, max_bands, loss_factor, max_frequency (did you mean 'max_bands'?)",
+     "an unknown key"},
 };
 
 class SceneTransferField : public ::testing::TestWithParam<TransferCase> {};

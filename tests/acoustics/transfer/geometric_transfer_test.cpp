@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "acoustics/bubble/minnaert.h"
 #include "acoustics/transfer/water_helmholtz.h"
 #include "tests/support/water_grid_shapes.h"
 
@@ -156,6 +157,32 @@ TEST(GeometricTransfer, OptionsOutOfRangeNameTheirField) {
   EXPECT_EQ(fieldOf(o), "transfer.loss_factor");
   o.lossFactor = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(fieldOf(o), "transfer.loss_factor");
+  o = {};
+  o.maxFrequency = -1.0;
+  EXPECT_EQ(fieldOf(o), "transfer.max_frequency");
+  o.maxFrequency = kMaxTransferFrequency * 2.0;
+  EXPECT_EQ(fieldOf(o), "transfer.max_frequency");
+}
+
+// Reference: the image-source model under the level plane (computeTransfer's flat-surface value),
+// which a sample above the frequency limit takes instead of the grid's. The grid's own limit at
+// 5 mm cells is c_a/(4h) = 17.2 kHz: a 0.15 mm bubble (≈ 21 kHz) is above it, a 1 mm one below.
+TEST(GeometricTransfer, SamplesAboveTheFrequencyLimitTakeTheLevelPlaneValue) {
+  const TransferResult result = run(bubblesOfRadii({1.5e-4, 1e-3}));
+  EXPECT_EQ(result.geometric.samplesAboveLimit, 1u);
+  const TrackSample& high = result.tracks.bubbles[0].track[0];
+  const TransferSetup setup = setupWithTwoListeners();
+  const double omega = naturalAngularFrequency(
+      1.5e-4, ambientPressureAt(high.depth, setup.liquid, setup.model), setup.liquid, setup.model);
+  LocalSurface level{*high.position, setup.up, high.depth};
+  level.point[1] += high.depth;
+  for (int l = 0; l < 2; ++l)
+    EXPECT_DOUBLE_EQ(high.transfer[l],
+                     imageSourceTransferAmplitude(*high.position, level, setup.listeners[l].position,
+                                                  omega, setup.liquid, setup.air));
+  GeometricTransferOptions wide;
+  wide.maxFrequency = 30000.0;
+  EXPECT_EQ(run(bubblesOfRadii({1.5e-4, 1e-3}), wide).geometric.samplesAboveLimit, 0u);
 }
 
 TEST(GeometricTransfer, AFailingSolveIsAnErrorNamingTheFrame) {
