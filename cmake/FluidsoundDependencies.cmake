@@ -6,6 +6,7 @@ find_package(Eigen3 3.4 CONFIG REQUIRED)               # linear algebra, FFT (un
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)       # scene and bubble-track files
 find_package(tinyobjloader CONFIG REQUIRED)            # OBJ meshes (version "2rc10": no version test)
 find_package(CLI11 CONFIG REQUIRED)                    # command line
+find_package(spectra 1.0 CONFIG REQUIRED)              # water modes: shift-invert Lanczos (MPL-2.0)
 find_package(GTest CONFIG REQUIRED)                    # tests
 find_package(benchmark CONFIG REQUIRED)                # benchmarks
 find_package(PkgConfig REQUIRED)

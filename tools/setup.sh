@@ -13,7 +13,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
-  libcairo2-dev libebur128-dev libsuitesparse-dev
+  libcairo2-dev libebur128-dev libsuitesparse-dev libspectra-dev
   python3 time        # tools/make_example_bubbles.py and tools/bench.sh only
   clang-14 libclang-rt-14-dev   # tools/fuzz.sh only: libFuzzer and the sanitizers' runtimes
 )

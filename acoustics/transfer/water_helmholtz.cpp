@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -41,6 +42,18 @@ struct WaterHelmholtz::Impl {
   std::vector<AirPoint> airPoints;
   std::vector<SurfaceCrossing> crossings;
   Eigen::SparseMatrix<double> laplacian;  ///< Σ w_f (u_c − u_n) + ghost terms, ×h² scaled
+  /// The fill-reducing (AMD) order of the fast method's LDLᵀ, the same for every frequency of
+  /// the frame: found once, on the first factorisation.
+  mutable std::once_flag orderOnce;
+  mutable Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order, orderInverse;
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& fillReducingOrder() const {
+    std::call_once(orderOnce, [this] {
+      Eigen::AMDOrdering<int> amd;
+      amd(laplacian, orderInverse);
+      order = orderInverse.inverse();
+    });
+    return order;
+  }
   Eigen::VectorXd volume;                 ///< open volume fraction ·h² per unknown
   Vec3 liquidMin{}, liquidMax{};
 
@@ -313,13 +326,21 @@ Eigen::VectorXcd WaterHelmholtz::rightHandSide(std::span<const Complex> airPress
 
 std::vector<Complex> WaterHelmholtz::airWeights(const PointSample& sample,
                                                 const Eigen::VectorXcd& adjoint) const {
-  std::vector<Complex> weights(impl_->airPoints.size(), Complex(0.0));
-  for (const SurfaceCrossing& x : impl_->crossings) weights[x.point] += x.coefficient * adjoint[x.unknown];
-  for (const auto& [point, weight] : sample.air) weights[point] += weight;
-  for (std::size_t p = 0; p < weights.size(); ++p)
-    if (impl_->airPoints[p].enclosed) weights[p] = 0.0;
+  std::vector<Complex> weights = surfaceWeights(adjoint);
+  for (const auto& [point, weight] : sample.air)
+    if (!impl_->airPoints[point].enclosed) weights[point] += weight;
   return weights;
 }
+
+std::vector<Complex> WaterHelmholtz::surfaceWeights(const Eigen::VectorXcd& v) const {
+  std::vector<Complex> weights(impl_->airPoints.size(), Complex(0.0));
+  for (const SurfaceCrossing& x : impl_->crossings)
+    if (!impl_->airPoints[x.point].enclosed) weights[x.point] += x.coefficient * v[x.unknown];
+  return weights;
+}
+
+const Eigen::SparseMatrix<double>& WaterHelmholtz::stiffness() const { return impl_->laplacian; }
+const Eigen::VectorXd& WaterHelmholtz::mass() const { return impl_->volume; }
 
 Complex WaterHelmholtz::evaluate(const PointSample& sample, const Eigen::VectorXcd& u,
                                  std::span<const Complex> airPressure) const {
@@ -339,9 +360,12 @@ struct HelmholtzFactor::Impl {
   ComplexMatrix matrix;
   Eigen::UmfPackLU<ComplexMatrix> lu;
   bool luReady = false;
-  // The fast method: a real LDLᵀ of the lossless operator L − Re(k²)M, the loss −i·Im(k²)M
-  // added back by iterative refinement.
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  // The fast method: a real LDLᵀ of the lossless operator L − Re(k²)M in the frame's
+  // fill-reducing order P (P L Pᵀ is factorised), the loss −i·Im(k²)M added back by iterative
+  // refinement.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>* order = nullptr;
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>* orderInverse = nullptr;
   bool ldltReady = false;
 
   void factoriseLu() {
@@ -351,23 +375,28 @@ struct HelmholtzFactor::Impl {
     luReady = true;
   }
   Eigen::VectorXcd solveReal(const Eigen::VectorXcd& rhs) const {
-    const Eigen::VectorXd re = ldlt.solve(rhs.real().eval()), im = ldlt.solve(rhs.imag().eval());
+    const Eigen::VectorXd re = *orderInverse * ldlt.solve((*order * rhs.real()).eval()),
+                          im = *orderInverse * ldlt.solve((*order * rhs.imag()).eval());
     Eigen::VectorXcd x(rhs.size());
     x.real() = re;
     x.imag() = im;
     return x;
   }
   /// The fast solve, or nothing when its refinement does not converge (within ~η of a
-  /// resonance, or a broken-down pivot).
-  std::optional<Eigen::VectorXcd> solveRefined(const Eigen::VectorXcd& rhs) const {
+  /// resonance, or a broken-down pivot). `modes`, when given, are kept out of every iterate.
+  std::optional<Eigen::VectorXcd> solveRefined(const Eigen::VectorXcd& rhs,
+                                               const ExcludedModes* modes = nullptr) const {
     if (!ldltReady) return std::nullopt;
     const double target = kRefinementTolerance * rhs.norm();
     Eigen::VectorXcd x = solveReal(rhs);
+    if (modes) modes->project(x);
     for (int iteration = 0; iteration < kMaxRefinements; ++iteration) {
       if (!x.allFinite()) return std::nullopt;
       const Eigen::VectorXcd residual = rhs - matrix * x;
       if (residual.norm() <= target) return x;
-      x += solveReal(residual);
+      Eigen::VectorXcd step = solveReal(residual);
+      if (modes) modes->project(step);
+      x += step;
     }
     return std::nullopt;
   }
@@ -389,7 +418,13 @@ std::unique_ptr<HelmholtzFactor> WaterHelmholtz::factorise(double angularFrequen
   factor->unknowns = unknowns();
   if (unknowns() == 0) return std::unique_ptr<HelmholtzFactor>(new HelmholtzFactor(std::move(factor)));
   if (method == HelmholtzMethod::Fast) {
-    factor->ldlt.compute(matrix.real());
+    factor->order = &impl_->fillReducingOrder();
+    factor->orderInverse = &impl_->orderInverse;
+    const Eigen::SparseMatrix<double> real = matrix.real();
+    Eigen::SparseMatrix<double> permuted(real.rows(), real.cols());
+    permuted.selfadjointView<Eigen::Lower>() =
+        real.selfadjointView<Eigen::Lower>().twistedBy(*factor->order);
+    factor->ldlt.compute(permuted);
     factor->ldltReady = factor->ldlt.info() == Eigen::Success;
   }
   if (!factor->ldltReady) factor->factoriseLu();
@@ -404,6 +439,28 @@ Eigen::VectorXcd HelmholtzFactor::solve(const Eigen::VectorXcd& rhs) const {
   if (impl_->lu.info() != Eigen::Success || !u.allFinite())
     throw std::runtime_error("the water-side solve gave a non-finite value");
   return u;
+}
+
+Eigen::VectorXcd HelmholtzFactor::solveOutside(const Eigen::VectorXcd& rhs,
+                                               const ExcludedModes& modes) const {
+  if (impl_->unknowns == 0) return Eigen::VectorXcd();
+  if (std::optional<Eigen::VectorXcd> fast = impl_->solveRefined(rhs, &modes))
+    return *std::move(fast);
+  Eigen::VectorXcd u = solve(rhs);
+  modes.project(u);
+  return u;
+}
+
+ExcludedModes::ExcludedModes(const Eigen::MatrixXd& modeShapes, const Eigen::VectorXd& mass)
+    : shapes(modeShapes.cast<Complex>()),
+      massShapes((mass.asDiagonal() * modeShapes).cast<Complex>()) {}
+
+void ExcludedModes::deflate(Eigen::VectorXcd& rhs) const {
+  if (shapes.cols() > 0) rhs -= massShapes * (shapes.transpose() * rhs);
+}
+
+void ExcludedModes::project(Eigen::VectorXcd& field) const {
+  if (shapes.cols() > 0) field -= shapes * (massShapes.transpose() * field);
 }
 
 Eigen::VectorXcd HelmholtzFactor::adjoint(const PointSample& sample) const {

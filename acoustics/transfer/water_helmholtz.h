@@ -39,6 +39,18 @@ struct PointSample {
 
 class HelmholtzFactor;
 
+/// Modes of the water (water_modes.h) that a solve works outside of: Φ (unknowns × J,
+/// M-orthonormal columns) and MΦ.
+struct ExcludedModes {
+  Eigen::MatrixXcd shapes, massShapes;
+
+  ExcludedModes(const Eigen::MatrixXd& modeShapes, const Eigen::VectorXd& mass);
+  /// b − MΦ Φᵀb: the part of a right-hand side that excites none of the modes.
+  void deflate(Eigen::VectorXcd& rhs) const;
+  /// v − Φ (MΦ)ᵀ v: the part of a field M-orthogonal to the modes.
+  void project(Eigen::VectorXcd& field) const;
+};
+
 /// How K(ω) is factorised; both give the same u to kRefinementTolerance (a test checks it).
 enum class HelmholtzMethod {
   /// A real LDLᵀ (Eigen, AMD ordering) of the lossless operator with the loss added back by
@@ -90,12 +102,33 @@ class WaterHelmholtz {
   /// Bᵀw restricted to the air points, plus the sample's own air weights: the weights that turn
   /// one adjoint solution w = K⁻¹s into u(x) = Σ_a weight_a·p_L,a for any p_L.
   std::vector<Complex> airWeights(const PointSample& sample, const Eigen::VectorXcd& adjoint) const;
+  /// Bᵀv alone: the air points' weights of a field v of the unknowns (zero at enclosed points),
+  /// so that vᵀ(B·p_L) = Σ_a weight_a·p_L,a.
+  std::vector<Complex> surfaceWeights(const Eigen::VectorXcd& v) const;
+
+  /// K(ω) = L − k_w² M: L, the weighted Laplacian with the ghost-fluid diagonal (×h², symmetric,
+  /// positive definite wherever the liquid meets air), frequency independent.
+  const Eigen::SparseMatrix<double>& stiffness() const;
+  /// M's diagonal: each unknown's open volume fraction·h² [m²].
+  const Eigen::VectorXd& mass() const;
   /// u(x) from a reciprocal solution `u` and p_L.
   Complex evaluate(const PointSample& sample, const Eigen::VectorXcd& u,
                    std::span<const Complex> airPressure) const;
 
  private:
   friend class HelmholtzFactor;
+
+/// Modes of the water (water_modes.h) that a solve works outside of: Φ (unknowns × J,
+/// M-orthonormal columns) and MΦ.
+struct ExcludedModes {
+  Eigen::MatrixXcd shapes, massShapes;
+
+  ExcludedModes(const Eigen::MatrixXd& modeShapes, const Eigen::VectorXd& mass);
+  /// b − MΦ Φᵀb: the part of a right-hand side that excites none of the modes.
+  void deflate(Eigen::VectorXcd& rhs) const;
+  /// v − Φ (MΦ)ᵀ v: the part of a field M-orthogonal to the modes.
+  void project(Eigen::VectorXcd& field) const;
+};
 
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -107,6 +140,10 @@ class HelmholtzFactor {
   ~HelmholtzFactor();
   /// K⁻¹ b. @throws std::runtime_error when the solve fails or gives a non-finite value
   Eigen::VectorXcd solve(const Eigen::VectorXcd& rhs) const;
+  /// K⁻¹ b for a b that excites none of `modes` (ExcludedModes::deflate), its iterates kept
+  /// outside them: the fast method's refinement then converges at η·k²/(λ − k²) per step, λ the
+  /// lowest mode not excluded, however near an excluded resonance ω lies.
+  Eigen::VectorXcd solveOutside(const Eigen::VectorXcd& rhs, const ExcludedModes& modes) const;
   /// The adjoint source of a sample: K⁻ᵀ s = K⁻¹ s (K is complex symmetric).
   Eigen::VectorXcd adjoint(const PointSample& sample) const;
 
