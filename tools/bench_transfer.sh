@@ -29,7 +29,7 @@ for c in "${cases[@]}"; do
   /usr/bin/python3 - "$out" "$c" <<'PY'
 import json, sys
 out, name = sys.argv[1], sys.argv[2]
-sim = json.load(open(f"{out}/simulate.report.json"))
+sim = json.load(open(f"{out}/report.json"))
 img = json.load(open(f"{out}/image.report.json"))
 geo = json.load(open(f"{out}/transfer.report.json"))
 fluid = sim["stages"]["simulation"]["seconds"]

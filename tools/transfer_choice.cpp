@@ -37,9 +37,9 @@ std::string transferChoiceFingerprint(const TransferChoice& choice) {
   const acoustics::GeometricTransferOptions& g = choice.geometric;
   char text[224];
   std::snprintf(text, sizeof text,
-                "transfer geometric max-bands %d loss-factor %.17g band-spacing %.17g "
+                "transfer geometric max-bands %d loss-factor %.17g band-phase %.17g "
                 "max-frequency %.17g",
-                g.maxBands, g.lossFactor, g.bandSpacingFactor, g.maxFrequency);
+                g.maxBands, g.lossFactor, g.bandPhaseFactor, g.maxFrequency);
   return text;
 }
 

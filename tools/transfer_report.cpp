@@ -10,7 +10,8 @@ namespace {
 nlohmann::ordered_json geometricStats(const acoustics::GeometricTransferStats& s) {
   return {
       {"reciprocal_frames", s.reciprocalFrames}, {"adjoint_frames", s.adjointFrames},
-      {"widened_frames", s.widenedFrames},       {"bands", s.bands},
+      {"widened_frames", s.widenedFrames},       {"mode_limited_frames", s.modeLimitedFrames},
+      {"bands", s.bands},                        {"modes", s.modes},
       {"factorisations", s.factorisations},      {"solves", s.solves},
       {"max_unknowns", s.maxUnknowns},           {"samples_outside_liquid", s.samplesOutsideLiquid},
       {"samples_above_limit", s.samplesAboveLimit},
@@ -27,7 +28,7 @@ void addTransferResults(RunReport& report, const TransferOptions& o, const Trans
   if (choice.model == sim::TransferModel::Geometric) {
     report.setting("max_bands", choice.geometric.maxBands);
     report.setting("loss_factor", choice.geometric.lossFactor);
-    report.setting("band_spacing_factor", choice.geometric.bandSpacingFactor);
+    report.setting("band_phase_factor", choice.geometric.bandPhaseFactor);
     report.setting("max_frequency_hz", choice.geometric.maxFrequency);
   }
   report.setOscillatorModel(o.model);
@@ -44,7 +45,7 @@ nlohmann::ordered_json transferSummary(const nlohmann::ordered_json& transferRep
   if (!transferReport.is_object()) return summary;
   const nlohmann::ordered_json settings =
       transferReport.value("settings", nlohmann::ordered_json::object());
-  for (const char* key : {"model", "max_bands", "loss_factor", "band_spacing_factor"})
+  for (const char* key : {"model", "max_bands", "loss_factor", "band_phase_factor"})
     if (settings.contains(key)) summary[key] = settings[key];
   const nlohmann::ordered_json results =
       transferReport.value("results", nlohmann::ordered_json::object());

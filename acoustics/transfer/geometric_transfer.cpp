@@ -4,18 +4,34 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
 #include "acoustics/bubble/minnaert.h"
+#include "acoustics/transfer/chebyshev_bands.h"
 #include "acoustics/transfer/frame_samples.h"
 #include "acoustics/transfer/rigid_surface_air_field.h"
 #include "acoustics/transfer/water_helmholtz.h"
+#include "acoustics/transfer/water_modes.h"
 
 namespace fluidsound::acoustics {
 
 namespace {
+
+/// The reciprocal route takes out every water mode below kModalCut times the frame's highest
+/// sample frequency, so the remainder's nearest resonance lies that far above the band range.
+constexpr double kModalCut = 1.5;
+/// More modes than this below the cut (a large, deep body of water): the frame takes the
+/// adjoint route, exact at each sample's own frequency, instead.
+constexpr int kMaxModes = 160;
+
+double distance(const Vec3& a, const Vec3& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
 
 /// One track sample of the frame being solved.
 struct FrameSample {
@@ -38,9 +54,9 @@ void checkOptions(const GeometricTransferOptions& o) {
                              "0 (the grid's limit) or a frequency in (0, " +
                                  std::to_string(static_cast<int>(kMaxTransferFrequency)) + "] Hz",
                              std::to_string(o.maxFrequency));
-  if (!(o.bandSpacingFactor > 0.0 && o.bandSpacingFactor <= 10.0))
-    throw TransferInputError(TransferInput::Options, "transfer.band_spacing_factor",
-                             "a number in (0, 10]", std::to_string(o.bandSpacingFactor));
+  if (!(o.bandPhaseFactor > 0.0 && o.bandPhaseFactor <= 10.0))
+    throw TransferInputError(TransferInput::Options, "transfer.band_phase_factor",
+                             "a number in (0, 10]", std::to_string(o.bandPhaseFactor));
 }
 
 /// p_L at every air point of the frame for one listener and frequency.
@@ -73,45 +89,88 @@ std::vector<double> levelPlaneTransfer(const Vec3& centre, double depth, double 
   return transfer;
 }
 
-/// The reciprocal route: one factorisation per band, one solve per band and listener; each
-/// sample interpolates between the two bands around its frequency, with the phase e^{−ik_a R}
-/// from the listener to the point above the bubble factored out (shared transfer.md §2 factors
-/// out the phase to the liquid's centre; the bubble's own surface point leaves only the phase
-/// differences across the surface near it, which vary slower with frequency).
+/// A frame's lowest water modes as the reciprocal route uses them: Φ and MΦ for the solves
+/// outside them, and each mode's value φ_j(x_s) at every sample.
+struct ModalPart {
+  WaterModes modes;
+  ExcludedModes excluded;
+  std::vector<std::vector<double>> atSample;  ///< [sample][mode]
+
+  ModalPart(WaterModes m, const WaterHelmholtz& water, const std::vector<FrameSample>& samples)
+      : modes(std::move(m)), excluded(modes.shape, water.mass()) {
+    const Eigen::Index count = modes.eigenvalue.size();
+    for (const FrameSample& s : samples) {
+      std::vector<double> values(static_cast<std::size_t>(count), 0.0);
+      for (Eigen::Index j = 0; j < count; ++j)
+        for (const auto& [cell, weight] : s.stencil.cells) values[j] += weight * modes.shape(cell, j);
+      atSample.push_back(std::move(values));
+    }
+  }
+  std::size_t count() const { return static_cast<std::size_t>(modes.eigenvalue.size()); }
+};
+
+/// k_w² = (ω/c_w)²(1 − iη), as WaterHelmholtz::factorise uses it [1/m²].
+Complex lossyWavenumberSquared(double omega, double soundSpeed, double lossFactor) {
+  const double k = omega / soundSpeed;
+  return {k * k, -k * k * lossFactor};
+}
+
+/// The reciprocal route (docs/transfer.md, "Bands and routes"): one factorisation per band, one
+/// solve per band and listener for all the frame's samples. The water's resonances below the cut
+/// (the frame's modes) are kept out of each band's solve, u = Σ_j φ_j (φ_jᵀb)/(λ_j − k_w²) + r
+/// with b = B·p_L, and added back in closed form at each sample's own frequency. What remains,
+/// r at the sample with the phase e^{−ik_a R} from the listener to the point above the bubble
+/// factored out, is smooth in ω and read between Chebyshev bands by barycentric interpolation;
+/// the modal numerators φ_jᵀb are read between the same bands with the phase to the liquid's
+/// centre factored out.
 void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& samples,
-                     const WaterHelmholtz& water, const TransferSetup& setup, int bands,
+                     const WaterHelmholtz& water, const ModalPart& modal,
+                     const ChebyshevBands& bands, const TransferSetup& setup, double lossFactor,
                      GeometricTransferStats& stats) {
-  double lo = samples.front().omega, hi = lo;
-  for (const FrameSample& s : samples) lo = std::min(lo, s.omega), hi = std::max(hi, s.omega);
-  const std::size_t listeners = setup.listeners.size(), count = samples.size();
-  const double step = bands > 1 ? (hi - lo) / (bands - 1) : 0.0;
-  std::vector<Complex> values(static_cast<std::size_t>(bands) * listeners * count);
-  for (int j = 0; j < bands; ++j) {
-    const double omega = lo + j * step;
+  const std::size_t listeners = setup.listeners.size(), count = samples.size(),
+                    modes = modal.count(), nodes = static_cast<std::size_t>(bands.count());
+  const double cw = setup.liquid.soundSpeed, ca = setup.air.soundSpeed;
+  const Vec3 centre = water.liquidCentre();
+  std::vector<Complex> remainder(nodes * listeners * count), numerator(nodes * listeners * modes);
+  for (std::size_t q = 0; q < nodes; ++q) {
+    const double omega = bands.node(static_cast<int>(q));
     const std::unique_ptr<HelmholtzFactor> factor = water.factorise(omega);
     ++stats.factorisations;
     for (std::size_t l = 0; l < listeners; ++l) {
       const Vec3& x = setup.listeners[l].position;
       const std::vector<Complex> p = airPressures(water, x, omega, setup.air);
-      const Eigen::VectorXcd u = factor->solve(water.rightHandSide(p));
+      Eigen::VectorXcd rhs = water.rightHandSide(p);
+      const Eigen::VectorXcd n = modal.excluded.shapes.transpose() * rhs;
+      modal.excluded.deflate(rhs);
+      const Eigen::VectorXcd r = factor->solveOutside(rhs, modal.excluded);
       ++stats.solves;
-      const double ka = omega / setup.air.soundSpeed;
+      const Complex toCentre = std::polar(1.0 / omega, omega / ca * distance(centre, x));
+      for (std::size_t j = 0; j < modes; ++j)
+        numerator[(q * listeners + l) * modes + j] = n[static_cast<Eigen::Index>(j)] * toCentre;
       for (std::size_t s = 0; s < count; ++s) {
-        const Vec3& y = samples[s].surfacePoint;
-        const double r = std::hypot(y[0] - x[0], y[1] - x[1], y[2] - x[2]);
-        values[(j * listeners + l) * count + s] =
-            water.evaluate(samples[s].stencil, u, p) * std::polar(1.0 / omega, ka * r);
+        const double path = distance(samples[s].surfacePoint, x);
+        remainder[(q * listeners + l) * count + s] = water.evaluate(samples[s].stencil, r, p) *
+                                                     std::polar(1.0 / omega, omega / ca * path);
       }
     }
   }
+  std::vector<double> weights(nodes);
   for (std::size_t s = 0; s < count; ++s) {
-    const double x = step > 0.0 ? (samples[s].omega - lo) / step : 0.0;
-    const int j0 = bands > 1 ? std::clamp(static_cast<int>(std::floor(x)), 0, bands - 2) : 0;
-    const double t = bands > 1 ? x - j0 : 0.0;
+    const double omega = samples[s].omega;
+    const Complex k2 = lossyWavenumberSquared(omega, cw, lossFactor);
+    bands.weightsAt(omega, weights);
     std::vector<double> transfer;
     for (std::size_t l = 0; l < listeners; ++l) {
-      Complex v = values[(j0 * listeners + l) * count + s];
-      if (bands > 1) v = (1.0 - t) * v + t * values[((j0 + 1) * listeners + l) * count + s];
+      const Vec3& x = setup.listeners[l].position;
+      Complex v(0.0);
+      for (std::size_t q = 0; q < nodes; ++q) v += weights[q] * remainder[(q * listeners + l) * count + s];
+      const Complex shift = std::polar(1.0, omega / ca * (distance(samples[s].surfacePoint, x) -
+                                                           distance(centre, x)));
+      for (std::size_t j = 0; j < modes; ++j) {
+        Complex n(0.0);
+        for (std::size_t q = 0; q < nodes; ++q) n += weights[q] * numerator[(q * listeners + l) * modes + j];
+        v += modal.atSample[s][j] * n * shift / (modal.modes.eigenvalue[j] - k2);
+      }
       transfer.push_back(std::abs(v) * 4.0 * std::numbers::pi / setup.liquid.density);
     }
     tracks.bubbles[samples[s].bubble].track[samples[s].sample].transfer = std::move(transfer);
@@ -139,14 +198,34 @@ void adjointRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sample
   }
 }
 
-/// Bands for the frame's liquid and frequency range (shared transfer.md §2).
-int bandCount(double lo, double hi, double liquidSize, const TransferSetup& setup,
-              const GeometricTransferOptions& options, bool& widened) {
-  if (!(hi > lo) || !(liquidSize > 0.0)) return 1;
-  const double spacing = options.bandSpacingFactor * setup.air.soundSpeed / liquidSize;  // [rad/s]
-  const double wanted = std::ceil((hi - lo) / spacing) + 1.0;
+/// The spread [m] of path lengths from any listener to the frame's open surface: the air phase
+/// e^{−ik_a R} varies across the surface by k_a times it.
+double pathSpread(const WaterHelmholtz& water, const TransferSetup& setup) {
+  double spread = 0.0;
+  for (const TransferListener& listener : setup.listeners) {
+    double lo = std::numeric_limits<double>::max(), hi = 0.0;
+    for (const AirPoint& point : water.airPoints()) {
+      if (point.enclosed) continue;
+      const double r = distance(point.position, listener.position);
+      lo = std::min(lo, r), hi = std::max(hi, r);
+    }
+    if (hi >= lo) spread = std::max(spread, hi - lo);
+  }
+  return spread;
+}
+
+/// Chebyshev bands over [ω_lo, ω_hi]. With the resonances below kModalCut·ω_hi taken out, the
+/// remainder is e^{iτx}-like on x ∈ [−1, 1], τ = (ω_hi − ω_lo)·spread/(2c_a) the half-range's
+/// phase spread across the surface, times a function whose nearest pole lies at x ≥ 2 (ρ ≥
+/// 2 + √3). Chebyshev coefficients of e^{iτx} are Bessel values J_n(τ), below 10⁻⁷ for n ≥ 1.5τ + 12;
+/// those of the pole part fall as ρ⁻ⁿ, 10⁻⁷ at n = 12 (Trefethen, ATAP, Thm 8.2).
+int chebyshevBandCount(double lo, double hi, double spread, const TransferSetup& setup,
+                       const GeometricTransferOptions& options, bool& widened) {
+  if (!(hi > lo)) return 1;
+  const double tau = (hi - lo) * spread / (2.0 * setup.air.soundSpeed);
+  const double wanted = std::ceil(options.bandPhaseFactor * tau + 12.0);
   widened = wanted > options.maxBands;
-  return widened ? options.maxBands : std::max(2, static_cast<int>(wanted));
+  return widened ? options.maxBands : static_cast<int>(wanted);
 }
 
 GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
@@ -195,11 +274,23 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
       double lo = samples.front().omega, hi = lo;
       for (const FrameSample& s : samples) lo = std::min(lo, s.omega), hi = std::max(hi, s.omega);
       bool widened = false;
-      const int bands = bandCount(lo, hi, water.liquidSize(), setup, options, widened);
+      const int bands =
+          chebyshevBandCount(lo, hi, pathSpread(water, setup), setup, options, widened);
+      std::optional<ModalPart> modal;
       if (static_cast<std::size_t>(bands) < samples.size()) {
-        reciprocalRoute(tracks, samples, water, setup, bands, stats);
+        const double cut = kModalCut * hi / setup.liquid.soundSpeed;
+        WaterModes modes = lowestWaterModes(water, cut * cut, kMaxModes);
+        ++stats.factorisations;
+        stats.solves += static_cast<std::size_t>(modes.operations);
+        if (modes.complete) modal.emplace(std::move(modes), water, samples);
+        else ++stats.modeLimitedFrames;
+      }
+      if (modal) {
+        reciprocalRoute(tracks, samples, water, *modal, ChebyshevBands(lo, hi, bands), setup,
+                        options.lossFactor, stats);
         ++stats.reciprocalFrames;
         stats.bands += bands;
+        stats.modes += modal->count();
         stats.widenedFrames += widened ? 1 : 0;
       } else {
         adjointRoute(tracks, samples, water, setup, stats);
@@ -218,6 +309,8 @@ void addStats(GeometricTransferStats& total, const GeometricTransferStats& frame
   total.reciprocalFrames += frame.reciprocalFrames;
   total.adjointFrames += frame.adjointFrames;
   total.widenedFrames += frame.widenedFrames;
+  total.modeLimitedFrames += frame.modeLimitedFrames;
+  total.modes += frame.modes;
   total.bands += frame.bands;
   total.factorisations += frame.factorisations;
   total.solves += frame.solves;

@@ -22,9 +22,10 @@ struct GeometricTransferOptions {
   /// η of k_w² = (ω/c_w)²(1 − iη), > 0 and ≤ 0.1. Default: 2ρ_a c_a/(ρ_w c_w), the order of the
   /// energy a resonant water body radiates into air per radian (docs/transfer.md).
   double lossFactor = 5.59e-4;
-  /// The band spacing's factor: Δf = bandSpacingFactor · c_a / (2π D), D the liquid's size
-  /// (shared transfer.md §2: 0.3).
-  double bandSpacingFactor = 0.3;
+  /// Bands per radian of the air phase's spread: a frame whose samples span [ω_lo, ω_hi] gets
+  /// ⌈bandPhaseFactor·τ⌉ + 12 Chebyshev bands, τ = (ω_hi − ω_lo)·ΔR/(2c_a), ΔR the spread of path
+  /// lengths from a listener to the liquid's surface (docs/transfer.md, "Bands and routes").
+  double bandPhaseFactor = 1.5;
   /// Highest sample frequency [Hz] the water grid answers; samples above it take the image-source
   /// value under the level plane (counted). 0: the grid's own limit c_a/(4h), four surface
   /// crossings per air wavelength (above it the crossings cannot sample p_L's phase). Else

@@ -58,9 +58,11 @@ struct GeometricTransferStats {
   std::size_t reciprocalFrames = 0;  ///< frames solved once per band and listener
   std::size_t adjointFrames = 0;     ///< frames solved once per sample
   std::size_t widenedFrames = 0;     ///< reciprocal frames whose bands hit the band limit
+  std::size_t modeLimitedFrames = 0; ///< frames with too many modes below the cut: adjoint route
   std::size_t bands = 0;             ///< bands over all reciprocal frames
-  std::size_t factorisations = 0;    ///< sparse LU factorisations
-  std::size_t solves = 0;            ///< back-substitutions
+  std::size_t modes = 0;             ///< water modes taken out, over all reciprocal frames
+  std::size_t factorisations = 0;    ///< sparse factorisations (bands, samples, mode shifts)
+  std::size_t solves = 0;            ///< back-substitutions (Lanczos steps included)
   std::size_t maxUnknowns = 0;       ///< liquid cells of the largest frame
   double maxFrequency = 0.0;         ///< highest sample frequency [Hz]
   std::size_t samplesOutsideLiquid = 0;  ///< samples with no liquid cell around them: level plane

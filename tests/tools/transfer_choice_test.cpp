@@ -136,7 +136,8 @@ TEST(TransferChoice, GeometricModelGivesFiniteTransfersAndItsStatistics) {
   ASSERT_TRUE(report["results"].contains("geometric"));
   const nlohmann::json& stats = report["results"]["geometric"];
   for (const char* key :
-       {"reciprocal_frames", "adjoint_frames", "widened_frames", "bands", "factorisations",
+       {"reciprocal_frames", "adjoint_frames", "widened_frames", "mode_limited_frames", "bands",
+        "modes", "factorisations",
         "solves", "max_unknowns", "samples_outside_liquid", "max_frequency_hz", "solve_seconds"})
     EXPECT_TRUE(stats.contains(key)) << key;
   EXPECT_GT(stats["factorisations"].get<double>(), 0.0);
