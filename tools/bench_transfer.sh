@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Benchmark (not a test) of the transfer stage's geometric model against the fluid stage: for each
 # scene and cell size, simulate once, then time `fluidsound transfer` with each model and print
-# seconds per frame, bands per reciprocal frame, factorisations, solves, the largest frame's
+# seconds per frame, bands and water modes per reciprocal frame, factorisations, solves (Lanczos
+# steps included), the largest frame's
 # liquid cells and the geometric transfer's share of the fluid stage's time (issue 19's goal:
 # ≤ 25 % with both listeners).
 #   usage: tools/bench_transfer.sh [SCENE[@CELL] ...]   (after tools/setup.sh)
@@ -14,8 +15,8 @@ trap 'rm -rf "$work"' EXIT
 cases=("$@")
 ((${#cases[@]})) || cases=(glass_pour glass_pour@0.0025 dam_break dam_break@0.007)
 
-printf '%-22s %7s %9s %9s %9s %7s %8s %8s %8s %7s\n' scene frames fluid_s image_s geom_s s/frame \
-  bands/fr factors unknowns share
+printf '%-22s %7s %9s %9s %9s %7s %8s %6s %8s %8s %8s %7s\n' scene frames fluid_s image_s geom_s \
+  s/frame bands/fr modes factors solves unknowns share
 for c in "${cases[@]}"; do
   scene=${c%@*}
   cell=()
@@ -33,12 +34,13 @@ sim = json.load(open(f"{out}/report.json"))
 img = json.load(open(f"{out}/image.report.json"))
 geo = json.load(open(f"{out}/transfer.report.json"))
 fluid = sim["stages"]["simulation"]["seconds"]
-r = geo["results"]
-frames = r["frames_read"]
+r = geo["results"]["geometric"]
+frames = int(geo["results"]["frames_read"])
 seconds = geo["stages"]["transfer"]["seconds"]
 recip = max(r["reciprocal_frames"], 1)
 print(f'{name:22s} {frames:7d} {fluid:9.2f} {img["stages"]["transfer"]["seconds"]:9.2f} '
       f'{seconds:9.2f} {seconds / max(frames, 1):7.3f} {r["bands"] / recip:8.1f} '
-      f'{r["factorisations"]:8d} {r["max_unknowns"]:8d} {100 * seconds / fluid:6.1f}%')
+      f'{r["modes"] / recip:6.1f} {r["factorisations"]:8d} {r["solves"]:8d} '
+      f'{r["max_unknowns"]:8d} {100 * seconds / fluid:6.1f}%')
 PY
 done

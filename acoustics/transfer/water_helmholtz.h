@@ -62,7 +62,7 @@ enum class HelmholtzMethod {
 };
 
 /// Relative residual ‖b − K u‖/‖b‖ at which the fast method's refinement stops.
-inline constexpr double kRefinementTolerance = 1e-12;
+inline constexpr double kRefinementTolerance = 1e-10;
 /// Refinement steps before the fast method falls back to the LU.
 inline constexpr int kMaxRefinements = 8;
 
