@@ -109,12 +109,6 @@ struct ModalPart {
   std::size_t count() const { return static_cast<std::size_t>(modes.eigenvalue.size()); }
 };
 
-/// k_w² = (ω/c_w)²(1 − iη), as WaterHelmholtz::factorise uses it [1/m²].
-Complex lossyWavenumberSquared(double omega, double soundSpeed, double lossFactor) {
-  const double k = omega / soundSpeed;
-  return {k * k, -k * k * lossFactor};
-}
-
 /// The reciprocal route (docs/transfer.md, "Bands and routes"): one factorisation per band, one
 /// solve per band and listener for all the frame's samples. The water's resonances below the cut
 /// (the frame's modes) are kept out of each band's solve, u = Σ_j φ_j (φ_jᵀb)/(λ_j − k_w²) + r
@@ -129,8 +123,14 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
                      GeometricTransferStats& stats) {
   const std::size_t listeners = setup.listeners.size(), count = samples.size(),
                     modes = modal.count(), nodes = static_cast<std::size_t>(bands.count());
-  const double cw = setup.liquid.soundSpeed, ca = setup.air.soundSpeed;
+  const double ca = setup.air.soundSpeed;
   const Vec3 centre = water.liquidCentre();
+  std::vector<double> path(listeners * count), toCentre(listeners);  // [m], listener to surface
+  for (std::size_t l = 0; l < listeners; ++l) {
+    toCentre[l] = distance(centre, setup.listeners[l].position);
+    for (std::size_t s = 0; s < count; ++s)
+      path[l * count + s] = distance(samples[s].surfacePoint, setup.listeners[l].position);
+  }
   std::vector<Complex> remainder(nodes * listeners * count), numerator(nodes * listeners * modes);
   for (std::size_t q = 0; q < nodes; ++q) {
     const double omega = bands.node(static_cast<int>(q));
@@ -140,32 +140,28 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
       const Vec3& x = setup.listeners[l].position;
       const std::vector<Complex> p = airPressures(water, x, omega, setup.air);
       Eigen::VectorXcd rhs = water.rightHandSide(p);
-      const Eigen::VectorXcd n = modal.excluded.shapes.transpose() * rhs;
-      modal.excluded.deflate(rhs);
+      const Eigen::VectorXcd n = modal.excluded.deflate(rhs);
       const Eigen::VectorXcd r = factor->solveOutside(rhs, modal.excluded);
       ++stats.solves;
-      const Complex toCentre = std::polar(1.0 / omega, omega / ca * distance(centre, x));
+      const Complex centrePhase = std::polar(1.0 / omega, omega / ca * toCentre[l]);
       for (std::size_t j = 0; j < modes; ++j)
-        numerator[(q * listeners + l) * modes + j] = n[static_cast<Eigen::Index>(j)] * toCentre;
-      for (std::size_t s = 0; s < count; ++s) {
-        const double path = distance(samples[s].surfacePoint, x);
-        remainder[(q * listeners + l) * count + s] = water.evaluate(samples[s].stencil, r, p) *
-                                                     std::polar(1.0 / omega, omega / ca * path);
-      }
+        numerator[(q * listeners + l) * modes + j] = n[static_cast<Eigen::Index>(j)] * centrePhase;
+      for (std::size_t s = 0; s < count; ++s)
+        remainder[(q * listeners + l) * count + s] =
+            water.evaluate(samples[s].stencil, r, p) *
+            std::polar(1.0 / omega, omega / ca * path[l * count + s]);
     }
   }
   std::vector<double> weights(nodes);
   for (std::size_t s = 0; s < count; ++s) {
     const double omega = samples[s].omega;
-    const Complex k2 = lossyWavenumberSquared(omega, cw, lossFactor);
+    const Complex k2 = lossyWavenumberSquared(omega, setup.liquid.soundSpeed, lossFactor);
     bands.weightsAt(omega, weights);
     std::vector<double> transfer;
     for (std::size_t l = 0; l < listeners; ++l) {
-      const Vec3& x = setup.listeners[l].position;
       Complex v(0.0);
       for (std::size_t q = 0; q < nodes; ++q) v += weights[q] * remainder[(q * listeners + l) * count + s];
-      const Complex shift = std::polar(1.0, omega / ca * (distance(samples[s].surfacePoint, x) -
-                                                           distance(centre, x)));
+      const Complex shift = std::polar(1.0, omega / ca * (path[l * count + s] - toCentre[l]));
       for (std::size_t j = 0; j < modes; ++j) {
         Complex n(0.0);
         for (std::size_t q = 0; q < nodes; ++q) n += weights[q] * numerator[(q * listeners + l) * modes + j];

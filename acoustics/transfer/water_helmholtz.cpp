@@ -326,16 +326,11 @@ Eigen::VectorXcd WaterHelmholtz::rightHandSide(std::span<const Complex> airPress
 
 std::vector<Complex> WaterHelmholtz::airWeights(const PointSample& sample,
                                                 const Eigen::VectorXcd& adjoint) const {
-  std::vector<Complex> weights = surfaceWeights(adjoint);
-  for (const auto& [point, weight] : sample.air)
-    if (!impl_->airPoints[point].enclosed) weights[point] += weight;
-  return weights;
-}
-
-std::vector<Complex> WaterHelmholtz::surfaceWeights(const Eigen::VectorXcd& v) const {
   std::vector<Complex> weights(impl_->airPoints.size(), Complex(0.0));
-  for (const SurfaceCrossing& x : impl_->crossings)
-    if (!impl_->airPoints[x.point].enclosed) weights[x.point] += x.coefficient * v[x.unknown];
+  for (const SurfaceCrossing& x : impl_->crossings) weights[x.point] += x.coefficient * adjoint[x.unknown];
+  for (const auto& [point, weight] : sample.air) weights[point] += weight;
+  for (std::size_t p = 0; p < weights.size(); ++p)
+    if (impl_->airPoints[p].enclosed) weights[p] = 0.0;
   return weights;
 }
 
@@ -407,8 +402,8 @@ HelmholtzFactor::~HelmholtzFactor() = default;
 
 std::unique_ptr<HelmholtzFactor> WaterHelmholtz::factorise(double angularFrequency,
                                                            HelmholtzMethod method) const {
-  const double k = angularFrequency / impl_->soundSpeed;
-  const Complex k2(k * k, -k * k * impl_->lossFactor);
+  const Complex k2 =
+      lossyWavenumberSquared(angularFrequency, impl_->soundSpeed, impl_->lossFactor);
   auto factor = std::make_unique<HelmholtzFactor::Impl>();
   factor->method = method;
   ComplexMatrix& matrix = factor->matrix;
@@ -455,8 +450,10 @@ ExcludedModes::ExcludedModes(const Eigen::MatrixXd& modeShapes, const Eigen::Vec
     : shapes(modeShapes.cast<Complex>()),
       massShapes((mass.asDiagonal() * modeShapes).cast<Complex>()) {}
 
-void ExcludedModes::deflate(Eigen::VectorXcd& rhs) const {
-  if (shapes.cols() > 0) rhs -= massShapes * (shapes.transpose() * rhs);
+Eigen::VectorXcd ExcludedModes::deflate(Eigen::VectorXcd& rhs) const {
+  Eigen::VectorXcd numerators = shapes.transpose() * rhs;
+  if (shapes.cols() > 0) rhs -= massShapes * numerators;
+  return numerators;
 }
 
 void ExcludedModes::project(Eigen::VectorXcd& field) const {

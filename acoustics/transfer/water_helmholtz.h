@@ -45,8 +45,9 @@ struct ExcludedModes {
   Eigen::MatrixXcd shapes, massShapes;
 
   ExcludedModes(const Eigen::MatrixXd& modeShapes, const Eigen::VectorXd& mass);
-  /// b − MΦ Φᵀb: the part of a right-hand side that excites none of the modes.
-  void deflate(Eigen::VectorXcd& rhs) const;
+  /// Replaces b by b − MΦ Φᵀb, the part of a right-hand side that excites none of the modes,
+  /// and returns the modes' numerators Φᵀb.
+  Eigen::VectorXcd deflate(Eigen::VectorXcd& rhs) const;
   /// v − Φ (MΦ)ᵀ v: the part of a field M-orthogonal to the modes.
   void project(Eigen::VectorXcd& field) const;
 };
@@ -60,6 +61,13 @@ enum class HelmholtzMethod {
   /// The complex LU of K(ω) itself (UMFPACK).
   Reference,
 };
+
+/// k_w² = (ω/c_w)²(1 − iη) [1/m²]: the water's wavenumber squared with the loss factor η.
+inline Complex lossyWavenumberSquared(double angularFrequency, double soundSpeed,
+                                      double lossFactor) {
+  const double k = angularFrequency / soundSpeed;
+  return {k * k, -k * k * lossFactor};
+}
 
 /// Relative residual ‖b − K u‖/‖b‖ at which the fast method's refinement stops.
 inline constexpr double kRefinementTolerance = 1e-10;
@@ -102,10 +110,6 @@ class WaterHelmholtz {
   /// Bᵀw restricted to the air points, plus the sample's own air weights: the weights that turn
   /// one adjoint solution w = K⁻¹s into u(x) = Σ_a weight_a·p_L,a for any p_L.
   std::vector<Complex> airWeights(const PointSample& sample, const Eigen::VectorXcd& adjoint) const;
-  /// Bᵀv alone: the air points' weights of a field v of the unknowns (zero at enclosed points),
-  /// so that vᵀ(B·p_L) = Σ_a weight_a·p_L,a.
-  std::vector<Complex> surfaceWeights(const Eigen::VectorXcd& v) const;
-
   /// K(ω) = L − k_w² M: L, the weighted Laplacian with the ghost-fluid diagonal (×h², symmetric,
   /// positive definite wherever the liquid meets air), frequency independent.
   const Eigen::SparseMatrix<double>& stiffness() const;
@@ -117,18 +121,6 @@ class WaterHelmholtz {
 
  private:
   friend class HelmholtzFactor;
-
-/// Modes of the water (water_modes.h) that a solve works outside of: Φ (unknowns × J,
-/// M-orthonormal columns) and MΦ.
-struct ExcludedModes {
-  Eigen::MatrixXcd shapes, massShapes;
-
-  ExcludedModes(const Eigen::MatrixXd& modeShapes, const Eigen::VectorXd& mass);
-  /// b − MΦ Φᵀb: the part of a right-hand side that excites none of the modes.
-  void deflate(Eigen::VectorXcd& rhs) const;
-  /// v − Φ (MΦ)ᵀ v: the part of a field M-orthogonal to the modes.
-  void project(Eigen::VectorXcd& field) const;
-};
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

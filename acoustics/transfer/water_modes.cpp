@@ -70,6 +70,15 @@ WaterModes modesBelow(const Eigen::VectorXd& values, const Eigen::MatrixXd& vect
   return modes;
 }
 
+/// At most `maxModes` of `modes`, marked incomplete when some were dropped.
+WaterModes limitedTo(WaterModes modes, int maxModes) {
+  if (modes.eigenvalue.size() <= maxModes) return modes;
+  modes.complete = false;
+  modes.eigenvalue.conservativeResize(maxModes);
+  modes.shape.conservativeResize(Eigen::NoChange, maxModes);
+  return modes;
+}
+
 }  // namespace
 
 WaterModes lowestWaterModes(const WaterHelmholtz& water, double maxEigenvalue, int maxModes) {
@@ -77,15 +86,7 @@ WaterModes lowestWaterModes(const WaterHelmholtz& water, double maxEigenvalue, i
   if (n == 0 || !(maxEigenvalue > 0.0)) return {};
   // Spectra needs nev < n and ncv ≤ n; a frame this small is solved densely.
   constexpr Eigen::Index kDenseUnknowns = 64;
-  if (n <= kDenseUnknowns) {
-    WaterModes modes = lowestWaterModesDense(water, maxEigenvalue);
-    if (modes.eigenvalue.size() > maxModes) {
-      modes.complete = false;
-      modes.eigenvalue.conservativeResize(maxModes);
-      modes.shape.conservativeResize(Eigen::NoChange, maxModes);
-    }
-    return modes;
-  }
+  if (n <= kDenseUnknowns) return limitedTo(lowestWaterModesDense(water, maxEigenvalue), maxModes);
   // σ just below the spectrum: every eigenvalue of L is ≥ 0, so the modes nearest σ are the
   // lowest, and L − σM is positive definite even for liquid shut in by solids.
   const double shift = -1e-3 * maxEigenvalue;
@@ -106,13 +107,8 @@ WaterModes lowestWaterModes(const WaterHelmholtz& water, double maxEigenvalue, i
     if (!allBelow || nev >= n - 2 || nev >= maxModes) {
       WaterModes modes = modesBelow(values, eigs.eigenvectors(), water.mass(), maxEigenvalue);
       modes.complete = !allBelow;
-      if (modes.eigenvalue.size() > maxModes) {
-        modes.complete = false;
-        modes.eigenvalue.conservativeResize(maxModes);
-        modes.shape.conservativeResize(Eigen::NoChange, maxModes);
-      }
       modes.operations = operations;
-      return modes;
+      return limitedTo(std::move(modes), maxModes);
     }
   }
 }
