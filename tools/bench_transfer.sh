@@ -13,7 +13,7 @@ fluidsound=$here/build/tools/fluidsound
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cases=("$@")
-((${#cases[@]})) || cases=(glass_pour glass_pour@0.0025 dam_break dam_break@0.007)
+((${#cases[@]})) || cases=(glass_pour glass_pour@0.0025 dam_break dam_break@0.00625)
 
 printf '%-22s %7s %9s %9s %9s %7s %8s %6s %8s %8s %8s %7s\n' scene frames fluid_s image_s geom_s \
   s/frame bands/fr modes factors solves unknowns share
