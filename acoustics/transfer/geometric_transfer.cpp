@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "acoustics/bubble/instantaneous_frequency.h"
 #include "acoustics/bubble/minnaert.h"
 #include "acoustics/transfer/chebyshev_bands.h"
 #include "acoustics/transfer/frame_samples.h"
@@ -37,6 +38,7 @@ double distance(const Vec3& a, const Vec3& b) {
 struct FrameSample {
   std::size_t bubble = 0, sample = 0;
   double omega = 0.0;  ///< the bubble's natural angular frequency at the sample's depth [rad/s]
+  double damping = 0.0;  ///< δ = 2β/ω₀ [-], the bubble's own damping constant in free water
   PointSample stencil;
   Vec3 surfacePoint{};  ///< the point `depth` above the bubble along `up` [m]
 };
@@ -87,6 +89,22 @@ std::vector<double> levelPlaneTransfer(const Vec3& centre, double depth, double 
     }
   }
   return transfer;
+}
+
+/// 1/(λ_j − k_w²) of every mode for one sample: the water's modes as the bubble drives them. A
+/// mode below kModalCut times the sample's own frequency is broadened by the bubble's bandwidth,
+/// k_w² = (ω/c_w)²(1 − i(η + δ)); the rest, as the operator has them, (ω/c_w)²(1 − iη)
+/// (docs/transfer.md, "Resonances"). The cut is the sample's own, so that both routes broaden the
+/// same modes whatever else their frame holds.
+Eigen::VectorXcd modalResponse(const FrameSample& sample, const Eigen::VectorXd& eigenvalues,
+                               const TransferSetup& setup, double lossFactor) {
+  const double c = setup.liquid.soundSpeed, cut = std::pow(kModalCut * sample.omega / c, 2);
+  const Complex plain = lossyWavenumberSquared(sample.omega, c, lossFactor),
+                broadened = lossyWavenumberSquared(sample.omega, c, lossFactor + sample.damping);
+  Eigen::VectorXcd response(eigenvalues.size());
+  for (Eigen::Index j = 0; j < eigenvalues.size(); ++j)
+    response[j] = 1.0 / (eigenvalues[j] - (eigenvalues[j] < cut ? broadened : plain));
+  return response;
 }
 
 /// A frame's lowest water modes as the reciprocal route uses them: Φ and MΦ for the solves
@@ -155,7 +173,7 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
   std::vector<double> weights(nodes);
   for (std::size_t s = 0; s < count; ++s) {
     const double omega = samples[s].omega;
-    const Complex k2 = lossyWavenumberSquared(omega, setup.liquid.soundSpeed, lossFactor);
+    const Eigen::VectorXcd response = modalResponse(samples[s], modal.modes.eigenvalue, setup, lossFactor);
     bands.weightsAt(omega, weights);
     std::vector<double> transfer;
     for (std::size_t l = 0; l < listeners; ++l) {
@@ -165,7 +183,7 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
       for (std::size_t j = 0; j < modes; ++j) {
         Complex n(0.0);
         for (std::size_t q = 0; q < nodes; ++q) n += weights[q] * numerator[(q * listeners + l) * modes + j];
-        v += modal.atSample[s][j] * n * shift / (modal.modes.eigenvalue[j] - k2);
+        v += modal.atSample[s][j] * n * shift * response[static_cast<Eigen::Index>(j)];
       }
       transfer.push_back(std::abs(v) * 4.0 * std::numbers::pi / setup.liquid.density);
     }
@@ -173,16 +191,32 @@ void reciprocalRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sam
   }
 }
 
+/// The adjoint solution w = K⁻¹s of one sample, with the frame's modes as the reciprocal route
+/// has them: w = r + Σ_j φ_j (φ_jᵀs)·modalResponse_j, r the solve outside the modes at the loss
+/// η. Without the modes (more below the frame's cut than kMaxModes) the whole operator takes the
+/// loss η + δ.
+Eigen::VectorXcd adjointSolution(const FrameSample& s, const WaterHelmholtz& water,
+                                 const ModalPart* modal, const TransferSetup& setup,
+                                 GeometricTransferStats& stats) {
+  ++stats.factorisations;
+  ++stats.solves;
+  if (!modal) return water.factorise(s.omega, HelmholtzMethod::Fast, s.damping)->adjoint(s.stencil);
+  Eigen::VectorXcd source = water.pointSource(s.stencil);
+  const Eigen::VectorXcd n = modal->excluded.deflate(source);
+  Eigen::VectorXcd w = water.factorise(s.omega)->solveOutside(source, modal->excluded);
+  w += modal->excluded.shapes *
+       n.cwiseProduct(modalResponse(s, modal->modes.eigenvalue, setup, water.lossFactor()));
+  return w;
+}
+
 /// The adjoint route: per sample one factorisation at its own frequency and one solve, whose
 /// surface weights give every listener's value.
 void adjointRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& samples,
-                  const WaterHelmholtz& water, const TransferSetup& setup,
+                  const WaterHelmholtz& water, const ModalPart* modal, const TransferSetup& setup,
                   GeometricTransferStats& stats) {
   for (const FrameSample& s : samples) {
-    const std::unique_ptr<HelmholtzFactor> factor = water.factorise(s.omega);
-    ++stats.factorisations;
-    ++stats.solves;
-    const std::vector<Complex> weights = water.airWeights(s.stencil, factor->adjoint(s.stencil));
+    const std::vector<Complex> weights =
+        water.airWeights(s.stencil, adjointSolution(s, water, modal, setup, stats));
     std::vector<double> transfer;
     for (const TransferListener& listener : setup.listeners) {
       const std::vector<Complex> p = airPressures(water, listener.position, s.omega, setup.air);
@@ -263,7 +297,9 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
     }
     Vec3 above = position;
     for (int a = 0; a < 3; ++a) above[a] += sample.depth * setup.up[a];
-    samples.push_back({b, s, omega, std::move(stencil), above});
+    const double damping =
+        ringingBubble(tracks.bubbles[b], setup.liquid, setup.model).deep.dampingConstant;
+    samples.push_back({b, s, omega, damping, std::move(stencil), above});
   }
   try {
     if (!samples.empty()) {
@@ -273,23 +309,24 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
       const int bands =
           chebyshevBandCount(lo, hi, pathSpread(water, setup), setup, options, widened);
       std::optional<ModalPart> modal;
-      if (static_cast<std::size_t>(bands) < samples.size()) {
-        const double cut = kModalCut * hi / setup.liquid.soundSpeed;
-        WaterModes modes = lowestWaterModes(water, cut * cut, kMaxModes);
-        ++stats.factorisations;
-        stats.solves += static_cast<std::size_t>(modes.operations);
-        if (modes.complete) modal.emplace(std::move(modes), water, samples);
-        else ++stats.modeLimitedFrames;
+      const double cut = kModalCut * hi / setup.liquid.soundSpeed;
+      WaterModes modes = lowestWaterModes(water, cut * cut, kMaxModes);
+      ++stats.factorisations;
+      stats.solves += static_cast<std::size_t>(modes.operations);
+      if (modes.complete) {
+        modal.emplace(std::move(modes), water, samples);
+        stats.modes += modal->count();
+      } else {
+        ++stats.modeLimitedFrames;
       }
-      if (modal) {
+      if (modal && static_cast<std::size_t>(bands) < samples.size()) {
         reciprocalRoute(tracks, samples, water, *modal, ChebyshevBands(lo, hi, bands), setup,
                         options.lossFactor, stats);
         ++stats.reciprocalFrames;
         stats.bands += bands;
-        stats.modes += modal->count();
         stats.widenedFrames += widened ? 1 : 0;
       } else {
-        adjointRoute(tracks, samples, water, setup, stats);
+        adjointRoute(tracks, samples, water, modal ? &*modal : nullptr, setup, stats);
         ++stats.adjointFrames;
       }
     }

@@ -60,7 +60,7 @@ struct GeometricTransferStats {
   std::size_t widenedFrames = 0;     ///< reciprocal frames whose bands hit the band limit
   std::size_t modeLimitedFrames = 0; ///< frames with too many modes below the cut: adjoint route
   std::size_t bands = 0;             ///< bands over all reciprocal frames
-  std::size_t modes = 0;             ///< water modes taken out, over all reciprocal frames
+  std::size_t modes = 0;             ///< water modes taken out, over all frames that found theirs
   std::size_t factorisations = 0;    ///< sparse factorisations (bands, samples, mode shifts)
   std::size_t solves = 0;            ///< back-substitutions (Lanczos steps included)
   std::size_t maxUnknowns = 0;       ///< liquid cells of the largest frame

@@ -401,9 +401,10 @@ HelmholtzFactor::HelmholtzFactor(std::unique_ptr<Impl> impl) : impl_(std::move(i
 HelmholtzFactor::~HelmholtzFactor() = default;
 
 std::unique_ptr<HelmholtzFactor> WaterHelmholtz::factorise(double angularFrequency,
-                                                           HelmholtzMethod method) const {
+                                                           HelmholtzMethod method,
+                                                           double extraLoss) const {
   const Complex k2 =
-      lossyWavenumberSquared(angularFrequency, impl_->soundSpeed, impl_->lossFactor);
+      lossyWavenumberSquared(angularFrequency, impl_->soundSpeed, impl_->lossFactor + extraLoss);
   auto factor = std::make_unique<HelmholtzFactor::Impl>();
   factor->method = method;
   ComplexMatrix& matrix = factor->matrix;
@@ -459,6 +460,14 @@ Eigen::VectorXcd ExcludedModes::deflate(Eigen::VectorXcd& rhs) const {
 void ExcludedModes::project(Eigen::VectorXcd& field) const {
   if (shapes.cols() > 0) field -= shapes * (massShapes.transpose() * field);
 }
+
+Eigen::VectorXcd WaterHelmholtz::pointSource(const PointSample& sample) const {
+  Eigen::VectorXcd source = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(unknowns()));
+  for (const auto& [cell, weight] : sample.cells) source[cell] += weight;
+  return source;
+}
+
+double WaterHelmholtz::lossFactor() const { return impl_->lossFactor; }
 
 Eigen::VectorXcd HelmholtzFactor::adjoint(const PointSample& sample) const {
   Eigen::VectorXcd source = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(impl_->unknowns));

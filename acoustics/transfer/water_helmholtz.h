@@ -101,9 +101,17 @@ class WaterHelmholtz {
   /// The sample of u at `x` [m]; empty (no cells, no air) when no liquid cell is among its corners.
   PointSample sampleAt(const Vec3& x) const;
 
-  /// @brief Factorises K(ω) = L − k_w² M. @throws std::runtime_error when the factorisation fails
+  /// @brief Factorises K(ω) = L − k_w² M, k_w² = (ω/c_w)²(1 − i(η + extraLoss)).
+  /// @param extraLoss  ≥ 0, added to the frame's loss factor η: a bubble's own damping constant
+  ///                   δ where its resonances are broadened by it (docs/transfer.md)
+  /// @throws std::runtime_error when the factorisation fails
   std::unique_ptr<HelmholtzFactor> factorise(double angularFrequency,
-                                             HelmholtzMethod method = HelmholtzMethod::Fast) const;
+                                             HelmholtzMethod method = HelmholtzMethod::Fast,
+                                             double extraLoss = 0.0) const;
+  /// The adjoint source s of a sample: its cells' trilinear weights (K w = s gives u's weights).
+  Eigen::VectorXcd pointSource(const PointSample& sample) const;
+  /// η, the frame's loss factor.
+  double lossFactor() const;
 
   /// The right-hand side B·p_L of the reciprocal solve from p_L at airPoints() (size must match).
   Eigen::VectorXcd rightHandSide(std::span<const Complex> airPressure) const;
