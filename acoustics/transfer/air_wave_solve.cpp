@@ -1,0 +1,336 @@
+// acoustics/transfer/air_wave_solve.cpp — see air_wave_solve.h.
+#include "acoustics/transfer/air_wave_solve.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <stdexcept>
+
+namespace fluidsound::acoustics {
+
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kPi = std::numbers::pi;
+
+/// The frame's grid with the absorbing layer around it: cells, faces and what is air.
+class AirGrid {
+ public:
+  AirGrid(const WaterGrid& grid, int layer) : grid_(grid), m_(layer) {
+    for (int a = 0; a < 3; ++a) n_[a] = grid.cells[a] + 2 * layer;
+    air_.resize(cellCount());
+    volume_.resize(cellCount());
+    for (int k = 0; k < n_[2]; ++k)
+      for (int j = 0; j < n_[1]; ++j)
+        for (int i = 0; i < n_[0]; ++i) {
+          const std::size_t c = cell(i, j, k);
+          const std::size_t g = grid.cellIndex(clampCell(0, i), clampCell(1, j), clampCell(2, k));
+          air_[c] = grid.phi[g] >= 0.0f;
+          volume_[c] = grid.cellOpen.empty() ? 1.0 : grid.cellOpen[g];
+        }
+    for (int a = 0; a < 3; ++a) {
+      std::array<int, 3> f = n_;
+      ++f[a];
+      open_[a].assign(static_cast<std::size_t>(f[0]) * f[1] * f[2], 0.0);
+      for (int k = 0; k < f[2]; ++k)
+        for (int j = 0; j < f[1]; ++j)
+          for (int i = 0; i < f[0]; ++i) {
+            const std::array<int, 3> at{i, j, k};
+            if (at[a] == 0 || at[a] == n_[a]) continue;  // the layer's outer wall: never reached
+            std::array<int, 3> lo = at;
+            --lo[a];
+            if (!air_[cell(lo[0], lo[1], lo[2])] || !air_[cell(i, j, k)]) continue;
+            open_[a][face(a, i, j, k)] = gridFaceOpen(a, at);
+          }
+    }
+    // A cell with no open face (inside a solid) takes no part. A cell's open volume is at least
+    // its largest open face fraction: a sliver of a cell behind an open face would otherwise need
+    // a time step shorter than the grid's own.
+    for (int k = 0; k < n_[2]; ++k)
+      for (int j = 0; j < n_[1]; ++j)
+        for (int i = 0; i < n_[0]; ++i) {
+          double largest = 0.0;
+          for (int a = 0; a < 3; ++a) {
+            std::array<int, 3> hi{i, j, k};
+            ++hi[a];
+            largest = std::max({largest, open_[a][face(a, i, j, k)], open_[a][face(a, hi[0], hi[1], hi[2])]});
+          }
+          if (largest <= 0.0) air_[cell(i, j, k)] = false;
+          double& v = volume_[cell(i, j, k)];
+          v = std::max({v, largest, 1e-3});
+        }
+  }
+
+  std::size_t cellCount() const { return static_cast<std::size_t>(n_[0]) * n_[1] * n_[2]; }
+  std::size_t cell(int i, int j, int k) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(n_[0]) * (j + static_cast<std::size_t>(n_[1]) * k);
+  }
+  std::size_t face(int a, int i, int j, int k) const {
+    std::array<std::size_t, 3> f{std::size_t(n_[0]), std::size_t(n_[1]), std::size_t(n_[2])};
+    ++f[a];
+    return i + f[0] * (j + f[1] * static_cast<std::size_t>(k));
+  }
+  const std::array<int, 3>& cells() const { return n_; }
+  int layer() const { return m_; }
+  bool air(std::size_t c) const { return air_[c]; }
+  double volume(std::size_t c) const { return volume_[c]; }
+  double open(int a, std::size_t f) const { return open_[a][f]; }
+  double cellSize() const { return grid_.cellSize; }
+  /// World position of a point given in extended-cell units (cell i spans [i, i+1]).
+  Vec3 world(double i, double j, double k) const {
+    const double h = grid_.cellSize;
+    return {grid_.origin[0] + (i - m_) * h, grid_.origin[1] + (j - m_) * h,
+            grid_.origin[2] + (k - m_) * h};
+  }
+  /// How deep in the absorbing layer a coordinate x along axis a (extended-cell units) lies, 0 … 1.
+  double depthInLayer(int a, double x) const {
+    return std::clamp(std::max(m_ - x, x - (n_[a] - m_)) / m_, 0.0, 1.0);
+  }
+  /// The extended cell holding world point x, or −1 outside.
+  long cellAt(const Vec3& x) const {
+    std::array<int, 3> c{};
+    for (int a = 0; a < 3; ++a) {
+      c[a] = static_cast<int>(std::floor((x[a] - grid_.origin[a]) / grid_.cellSize)) + m_;
+      if (c[a] < 0 || c[a] >= n_[a]) return -1;
+    }
+    return static_cast<long>(cell(c[0], c[1], c[2]));
+  }
+
+ private:
+  int clampCell(int a, int i) const { return std::clamp(i - m_, 0, grid_.cells[a] - 1); }
+  /// The open fraction the frame's grid gives a face; beyond the grid, the face nearest inside
+  /// it. The grid's own boundary faces carry the fluid's domain walls, which are not walls for
+  /// the air, so they read the first interior face instead.
+  double gridFaceOpen(int a, const std::array<int, 3>& at) const {
+    if (grid_.faceOpen[a].empty()) return 1.0;
+    std::array<int, 3> g{};
+    for (int b = 0; b < 3; ++b)
+      g[b] = b == a ? std::clamp(at[b] - m_, 1, std::max(1, grid_.cells[b] - 1))
+                    : std::clamp(at[b] - m_, 0, grid_.cells[b] - 1);
+    if (grid_.cells[a] == 1) return 1.0;
+    return grid_.faceOpen[a][grid_.faceIndex(a, g[0], g[1], g[2])];
+  }
+
+  const WaterGrid& grid_;
+  int m_;
+  std::array<int, 3> n_{};
+  std::vector<char> air_;
+  std::vector<double> volume_;
+  std::array<std::vector<double>, 3> open_;
+};
+
+/// The listener's monopole: volume velocity q(t) = exp(−((t − t₀)/τ)²) [m³/s].
+struct GaussianPulse {
+  double tau, t0;
+  double q(double t) const { const double x = (t - t0) / tau; return std::exp(-x * x); }
+  double dq(double t) const { return -2.0 * (t - t0) / (tau * tau) * q(t); }
+  /// Q(ω) = ∫ q e^{−iωt} dt = τ√π e^{−(ωτ/2)²} e^{−iωt₀}.
+  Complex spectrum(double w) const {
+    return tau * std::sqrt(kPi) * std::exp(-std::pow(w * tau / 2.0, 2)) * std::polar(1.0, -w * t0);
+  }
+};
+
+/// A face whose rigid part (1 − open fraction) borders air: there the scattered normal velocity
+/// is minus the incident one, v_inc·e_a = (q(t_r)/(4πR²) + q̇(t_r)/(4πRc))·(x_f − x_L)_a/R.
+struct RigidFace {
+  int axis;
+  std::size_t face;
+  double rigid;  ///< 1 − open fraction
+  /// Per source (the listener, then its image if any): R [m] and (x_f − x_source)_a / R.
+  std::array<double, 2> distance{}, cosine{};
+};
+
+}  // namespace
+
+std::vector<std::vector<Complex>> airSidePressure(const WaterGrid& grid, const Vec3& listener,
+                                                  std::span<const Vec3> probes,
+                                                  std::span<const double> angularFrequencies,
+                                                  const AirProperties& air,
+                                                  const AirWaveOptions& options) {
+  if (grid.phi.size() != grid.cellCount() || !(grid.cellSize > 0.0))
+    throw std::invalid_argument("airSidePressure: the grid's arrays do not match its cells");
+  if (!(options.maxFrequency > 0.0) || !(options.courant > 0.0 && options.courant <= 1.0) ||
+      options.absorbingCells < 1 || !(options.ringTime >= 0.0))
+    throw std::invalid_argument("airSidePressure: options out of range");
+  const AirGrid g(grid, options.absorbingCells);
+  const std::array<int, 3> n = g.cells();
+  const double h = g.cellSize(), c = air.soundSpeed, rho = air.density;
+  const double dt = options.courant * h / (c * std::sqrt(3.0));
+  const double tau = 2.0 * std::sqrt(std::log(1000.0)) / (2.0 * kPi * options.maxFrequency);
+  const GaussianPulse pulse{tau, 4.0 * tau};
+
+  // The absorbing layer, a split-field perfectly matched layer (Berenger 1994 in its acoustic
+  // form): p = p_x + p_y + p_z, each part damped at σ_a only by the flux along its own axis, and
+  // v_a at σ_a, so a wave leaves through any side without reflection in the continuum.
+  // σ_a = σ_max d², d the depth into the layer along a; the normal-incidence round trip
+  // attenuates by e^{−2σ_max m h/(3c)} = 10⁻⁴. Factors e^{−σΔt} per step, per axis and index.
+  const double sigmaMax = 3.0 * c * std::log(1e4) / (2.0 * options.absorbingCells * h);
+  std::array<std::vector<double>, 3> cellDecay, faceDecay;
+  for (int a = 0; a < 3; ++a) {
+    for (int i = 0; i < n[a]; ++i)
+      cellDecay[a].push_back(std::exp(-sigmaMax * std::pow(g.depthInLayer(a, i + 0.5), 2) * dt));
+    for (int i = 0; i <= n[a]; ++i)
+      faceDecay[a].push_back(std::exp(-sigmaMax * std::pow(g.depthInLayer(a, i), 2) * dt));
+  }
+
+  std::vector<Vec3> sources{listener};  // the known field's monopoles
+  if (options.groundHeight)
+    sources.push_back({listener[0], 2.0 * *options.groundHeight - listener[1], listener[2]});
+  std::vector<RigidFace> rigid;
+  double farthest = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    std::array<int, 3> f = n;
+    ++f[a];
+    for (int k = 0; k < f[2]; ++k)
+      for (int j = 0; j < f[1]; ++j)
+        for (int i = 0; i < f[0]; ++i) {
+          const std::array<int, 3> at{i, j, k};
+          if (at[a] == 0 || at[a] == n[a]) continue;
+          std::array<int, 3> lo = at;
+          --lo[a];
+          const std::size_t face = g.face(a, i, j, k);
+          const bool airLo = g.air(g.cell(lo[0], lo[1], lo[2])), airHi = g.air(g.cell(i, j, k));
+          if (!(airLo || airHi) || g.open(a, face) >= 1.0) continue;
+          std::array<double, 3> centre{i + 0.5, j + 0.5, k + 0.5};
+          centre[a] -= 0.5;
+          const Vec3 x = g.world(centre[0], centre[1], centre[2]);
+          RigidFace rf{a, face, 1.0 - g.open(a, face)};
+          for (std::size_t s = 0; s < sources.size(); ++s) {
+            const Vec3& y = sources[s];
+            const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
+            if (!(r > 0.5 * h))
+              throw std::invalid_argument("airSidePressure: the listener is on a rigid face");
+            rf.distance[s] = r, rf.cosine[s] = (x[a] - y[a]) / r;
+          }
+          rigid.push_back(rf);
+        }
+  }
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 x = g.world(corner & 1 ? n[0] : 0, corner & 2 ? n[1] : 0, corner & 4 ? n[2] : 0);
+    for (const Vec3& y : sources)
+      farthest = std::max(farthest, std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]));
+  }
+  const auto steps = static_cast<long>(std::ceil((pulse.t0 + 4.0 * tau + farthest / c + options.ringTime) / dt));
+
+  // Probes: the air cell holding each point, else its nearest air neighbour.
+  std::vector<long> probeCell;
+  for (const Vec3& x : probes) {
+    long found = -1;
+    const long at = g.cellAt(x);
+    if (at >= 0 && g.air(static_cast<std::size_t>(at))) {
+      found = at;
+    } else if (at >= 0) {
+      double best = 2.0 * h;
+      const auto i = static_cast<int>(at % n[0]), j = static_cast<int>(at / n[0] % n[1]),
+                 k = static_cast<int>(at / (static_cast<long>(n[0]) * n[1]));
+      for (int a = 0; a < 3; ++a)
+        for (int s = -1; s <= 1; s += 2) {
+          std::array<int, 3> nb{i, j, k};
+          nb[a] += s;
+          if (nb[a] < 0 || nb[a] >= n[a]) continue;
+          const std::size_t cc = g.cell(nb[0], nb[1], nb[2]);
+          if (!g.air(cc)) continue;
+          const Vec3 centre = g.world(nb[0] + 0.5, nb[1] + 0.5, nb[2] + 0.5);
+          const double d = std::hypot(centre[0] - x[0], centre[1] - x[1], centre[2] - x[2]);
+          if (d < best) best = d, found = static_cast<long>(cc);
+        }
+    }
+    probeCell.push_back(found);
+  }
+
+  std::array<std::vector<double>, 3> part;  // p_x, p_y, p_z
+  for (auto& pa : part) pa.assign(g.cellCount(), 0.0);
+  std::vector<double> p(g.cellCount(), 0.0);  // their sum
+  std::array<std::vector<double>, 3> v;
+  std::array<std::vector<double>, 3> vInc;  // −v_inc·e_a·(1 − open) on rigid faces, this step
+  for (int a = 0; a < 3; ++a) {
+    std::array<std::size_t, 3> f{std::size_t(n[0]), std::size_t(n[1]), std::size_t(n[2])};
+    ++f[a];
+    v[a].assign(f[0] * f[1] * f[2], 0.0);
+    vInc[a].assign(f[0] * f[1] * f[2], 0.0);
+  }
+  const std::size_t freqs = angularFrequencies.size();
+  std::vector<Complex> accumulated(probes.size() * freqs, 0.0), phasor(freqs, 1.0), rotation(freqs);
+  for (std::size_t q = 0; q < freqs; ++q) rotation[q] = std::polar(1.0, -angularFrequencies[q] * dt);
+
+  const std::array<std::size_t, 3> stride{1, std::size_t(n[0]), std::size_t(n[0]) * n[1]};
+  for (long step = 0; step < steps; ++step) {
+    // v^{n+1/2} from p^n on the open faces.
+    tbb::parallel_for(tbb::blocked_range<int>(0, n[2]), [&](const tbb::blocked_range<int>& r) {
+      for (int k = r.begin(); k < r.end(); ++k)
+        for (int a = 0; a < 3; ++a)
+          for (int j = 0; j < n[1] + (a == 1); ++j)
+            for (int i = 0; i < n[0] + (a == 0); ++i) {
+              if (a == 2 && k == 0) continue;
+              const std::size_t f = g.face(a, i, j, k);
+              if (g.open(a, f) <= 0.0) continue;
+              const std::size_t hi = g.cell(i, j, k), lo = hi - stride[a];
+              const std::array<int, 3> at{i, j, k};
+              v[a][f] = faceDecay[a][at[a]] * (v[a][f] - dt / (rho * h) * (p[hi] - p[lo]));
+            }
+    });
+    const double t = (step + 0.5) * dt;
+    for (const RigidFace& rf : rigid) {
+      double normal = 0.0;
+      for (std::size_t s = 0; s < sources.size(); ++s) {
+        const double r = rf.distance[s], tr = t - r / c;
+        normal += (pulse.q(tr) / (4.0 * kPi * r * r) + pulse.dq(tr) / (4.0 * kPi * r * c)) * rf.cosine[s];
+      }
+      vInc[rf.axis][rf.face] = -rf.rigid * normal;
+    }
+    // p^{n+1} from the flux through each face: open part v, rigid part −v_inc.
+    tbb::parallel_for(tbb::blocked_range<int>(0, n[2]), [&](const tbb::blocked_range<int>& r) {
+      for (int k = r.begin(); k < r.end(); ++k)
+        for (int j = 0; j < n[1]; ++j)
+          for (int i = 0; i < n[0]; ++i) {
+            const std::size_t cc = g.cell(i, j, k);
+            if (!g.air(cc)) continue;
+            const double factor = dt * rho * c * c / (h * g.volume(cc));
+            const std::array<int, 3> at{i, j, k};
+            double sum = 0.0;
+            for (int a = 0; a < 3; ++a) {
+              std::array<int, 3> up = at;
+              ++up[a];
+              const std::size_t fl = g.face(a, i, j, k), fh = g.face(a, up[0], up[1], up[2]);
+              const double flux = g.open(a, fh) * v[a][fh] + vInc[a][fh] - g.open(a, fl) * v[a][fl] - vInc[a][fl];
+              double& pa = part[a][cc];
+              pa = cellDecay[a][at[a]] * (pa - factor * flux);
+              sum += pa;
+            }
+            p[cc] = sum;
+          }
+    });
+    for (std::size_t q = 0; q < freqs; ++q) phasor[q] *= rotation[q];
+    for (std::size_t s = 0; s < probes.size(); ++s) {
+      if (probeCell[s] < 0) continue;
+      const double value = p[static_cast<std::size_t>(probeCell[s])];
+      for (std::size_t q = 0; q < freqs; ++q) accumulated[s * freqs + q] += value * phasor[q];
+    }
+  }
+
+  std::vector<std::vector<Complex>> result(probes.size(), std::vector<Complex>(freqs, 0.0));
+  for (std::size_t s = 0; s < probes.size(); ++s) {
+    if (probeCell[s] < 0) continue;
+    const auto cc = static_cast<std::size_t>(probeCell[s]);
+    const auto i = static_cast<double>(cc % n[0]), j = static_cast<double>(cc / n[0] % n[1]),
+               k = static_cast<double>(cc / (static_cast<std::size_t>(n[0]) * n[1]));
+    const Vec3 x = g.world(i + 0.5, j + 0.5, k + 0.5);
+    for (std::size_t q = 0; q < freqs; ++q) {
+      const double w = angularFrequencies[q];
+      Complex known(0.0);
+      for (const Vec3& y : sources) {
+        const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
+        known += Complex(0.0, w * rho) * std::polar(1.0, -w / c * r) / (4.0 * kPi * r);
+      }
+      result[s][q] = accumulated[s * freqs + q] * dt / pulse.spectrum(w) + known;
+    }
+  }
+  return result;
+}
+
+}  // namespace fluidsound::acoustics
