@@ -27,12 +27,26 @@ sim::TransferModel transferModel(const JsonValidator& check, const nlohmann::jso
   check.fail(path, expected, describe(value));
 }
 
+sim::AirModel airModel(const JsonValidator& check, const nlohmann::json& value,
+                       const std::string& path) {
+  std::string expected = R"("rigid_surface" or "wave")";
+  if (value.is_string()) {
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text == "rigid_surface") return sim::AirModel::RigidSurface;
+    if (text == "wave") return sim::AirModel::Wave;
+    const std::string suggestion = closestKey(text, {"rigid_surface", "wave"}, true);
+    if (!suggestion.empty()) expected += " (did you mean " + quotedText(suggestion) + "?)";
+  }
+  check.fail(path, expected, describe(value));
+}
+
 }  // namespace
 
 sim::TransferSettings readTransferSettings(const JsonValidator& check,
                                            const nlohmann::json& object) {
   const std::string path = "transfer";
-  check.rejectUnknownKeys(object, path, {"model", "max_bands", "loss_factor", "max_frequency"});
+  check.rejectUnknownKeys(object, path, {"model", "max_bands", "loss_factor", "max_frequency",
+                                         "air", "air_interval", "air_cell"});
   sim::TransferSettings s;
   if (const nlohmann::json* model = findMember(object, "model"))
     s.model = transferModel(check, *model, memberPath(path, "model"));
@@ -50,6 +64,16 @@ sim::TransferSettings readTransferSettings(const JsonValidator& check,
     s.maxFrequency = check.number(*limit, memberPath(path, "max_frequency"),
                                   "a frequency > 0 and <= 100000 Hz (the geometric model's limit)",
                                   [](double v) { return v > 0 && v <= acoustics::kMaxTransferFrequency; });
+  if (const nlohmann::json* air = findMember(object, "air"))
+    s.air = airModel(check, *air, memberPath(path, "air"));
+  if (const nlohmann::json* interval = findMember(object, "air_interval"))
+    s.airInterval = check.number(*interval, memberPath(path, "air_interval"),
+                                 "a time > 0 and <= 10 s (between air solves)",
+                                 [](double v) { return v > 0 && v <= 10.0; });
+  if (const nlohmann::json* cell = findMember(object, "air_cell"))
+    s.airCell = check.number(*cell, memberPath(path, "air_cell"),
+                             "a length > 0 and <= 0.1 m (the air grid's cell)",
+                             [](double v) { return v > 0 && v <= 0.1; });
   return s;
 }
 

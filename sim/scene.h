@@ -28,6 +28,12 @@ enum class TransferModel {
               ///< docs/transfer.md, "Choosing the model", says why)
 };
 
+/// The geometric model's air side (docs/transfer.md, "The air side").
+enum class AirModel {
+  RigidSurface,  ///< free field doubled by a rigid liquid surface, nothing in the way
+  Wave,          ///< a wave solve of the air with the frame's liquid and solids in place
+};
+
 /// The scene's optional "transfer" block (docs/scene.md). The numbers apply to the geometric
 /// model; empty means the model's own default (acoustics::GeometricTransferOptions), which the
 /// record does not repeat. The ranges are checked where the block is read (io/scene_file.cpp).
@@ -36,6 +42,9 @@ struct TransferSettings {
   std::optional<int> maxBands;       ///< upper limit of bands per frame, 2 … 4096
   std::optional<double> maxFrequency;  ///< [Hz], (0, 100000]; empty: the grid's limit c_a/(4h)
   std::optional<double> lossFactor;  ///< η of the water's k_w² = (ω/c_w)²(1 − iη), (0, 0.1]
+  AirModel air = AirModel::RigidSurface;
+  std::optional<double> airInterval;  ///< [s] between the wave air side's solves, (0, 10]
+  std::optional<double> airCell;      ///< [m] the wave air side's cell, (0, 0.1]
   bool operator==(const TransferSettings&) const = default;
 };
 

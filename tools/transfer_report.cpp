@@ -14,7 +14,8 @@ nlohmann::ordered_json geometricStats(const acoustics::GeometricTransferStats& s
       {"bands", s.bands},                        {"modes", s.modes},
       {"factorisations", s.factorisations},      {"solves", s.solves},
       {"max_unknowns", s.maxUnknowns},           {"samples_outside_liquid", s.samplesOutsideLiquid},
-      {"samples_above_limit", s.samplesAboveLimit},
+      {"samples_above_limit", s.samplesAboveLimit}, {"air_solves", s.airSolves},
+      {"air_samples", s.airSamples},
       {"max_frequency_hz", s.maxFrequency},      {"solve_seconds", s.solveSeconds}};
 }
 
@@ -30,6 +31,11 @@ void addTransferResults(RunReport& report, const TransferOptions& o, const Trans
     report.setting("loss_factor", choice.geometric.lossFactor);
     report.setting("band_phase_factor", choice.geometric.bandPhaseFactor);
     report.setting("max_frequency_hz", choice.geometric.maxFrequency);
+    report.setting("air", choice.geometric.waveAir ? "wave" : "rigid_surface");
+    if (choice.geometric.waveAir) {
+      report.setting("air_interval", choice.geometric.waveAir->interval);
+      report.setting("air_cell", choice.geometric.waveAir->cellSize);
+    }
   }
   report.setOscillatorModel(o.model);
   report.result("bubbles", static_cast<double>(result.bubbles));

@@ -4,6 +4,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <unsupported/Eigen/FFT>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -145,13 +147,29 @@ struct RigidFace {
   std::array<double, 2> distance{}, cosine{};
 };
 
-}  // namespace
+/// One run of the solve: the scattered pressure at each probe's cell, every step.
+struct Recording {
+  double dt = 0.0;
+  GaussianPulse pulse{};
+  std::vector<Vec3> sources;      ///< the known field's monopoles
+  std::vector<Vec3> probeCentre;  ///< the cell centre each probe reads
+  std::vector<char> probeFound;   ///< whether it found an air cell
+  std::vector<std::vector<double>> scattered;  ///< [probe][step], p at t = (step + 1)Δt
 
-std::vector<std::vector<Complex>> airSidePressure(const WaterGrid& grid, const Vec3& listener,
-                                                  std::span<const Vec3> probes,
-                                                  std::span<const double> angularFrequencies,
-                                                  const AirProperties& air,
-                                                  const AirWaveOptions& options) {
+  /// p_known at probe s per unit volume velocity, e^{+iωt}.
+  Complex known(std::size_t s, double w, const AirProperties& air) const {
+    Complex sum(0.0);
+    for (const Vec3& y : sources) {
+      const Vec3& x = probeCentre[s];
+      const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
+      sum += Complex(0.0, w * air.density) * std::polar(1.0, -w / air.soundSpeed * r) / (4.0 * kPi * r);
+    }
+    return sum;
+  }
+};
+
+Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Vec3> probes,
+                 const AirProperties& air, const AirWaveOptions& options) {
   if (grid.phi.size() != grid.cellCount() || !(grid.cellSize > 0.0))
     throw std::invalid_argument("airSidePressure: the grid's arrays do not match its cells");
   if (!(options.maxFrequency > 0.0) || !(options.courant > 0.0 && options.courant <= 1.0) ||
@@ -254,9 +272,23 @@ std::vector<std::vector<Complex>> airSidePressure(const WaterGrid& grid, const V
     v[a].assign(f[0] * f[1] * f[2], 0.0);
     vInc[a].assign(f[0] * f[1] * f[2], 0.0);
   }
-  const std::size_t freqs = angularFrequencies.size();
-  std::vector<Complex> accumulated(probes.size() * freqs, 0.0), phasor(freqs, 1.0), rotation(freqs);
-  for (std::size_t q = 0; q < freqs; ++q) rotation[q] = std::polar(1.0, -angularFrequencies[q] * dt);
+  Recording rec;
+  rec.dt = dt;
+  rec.pulse = pulse;
+  rec.sources = sources;
+  rec.scattered.resize(probes.size());
+  for (std::size_t s = 0; s < probes.size(); ++s) {
+    rec.probeFound.push_back(probeCell[s] >= 0);
+    if (probeCell[s] < 0) {
+      rec.probeCentre.push_back(probes[s]);
+      continue;
+    }
+    const auto cc = static_cast<std::size_t>(probeCell[s]);
+    rec.probeCentre.push_back(g.world(static_cast<double>(cc % n[0]) + 0.5,
+                                      static_cast<double>(cc / n[0] % n[1]) + 0.5,
+                                      static_cast<double>(cc / (static_cast<std::size_t>(n[0]) * n[1])) + 0.5));
+    rec.scattered[s].reserve(static_cast<std::size_t>(steps));
+  }
 
   const std::array<std::size_t, 3> stride{1, std::size_t(n[0]), std::size_t(n[0]) * n[1]};
   for (long step = 0; step < steps; ++step) {
@@ -305,32 +337,67 @@ std::vector<std::vector<Complex>> airSidePressure(const WaterGrid& grid, const V
             p[cc] = sum;
           }
     });
-    for (std::size_t q = 0; q < freqs; ++q) phasor[q] *= rotation[q];
-    for (std::size_t s = 0; s < probes.size(); ++s) {
-      if (probeCell[s] < 0) continue;
-      const double value = p[static_cast<std::size_t>(probeCell[s])];
-      for (std::size_t q = 0; q < freqs; ++q) accumulated[s * freqs + q] += value * phasor[q];
-    }
+    for (std::size_t s = 0; s < probes.size(); ++s)
+      if (probeCell[s] >= 0) rec.scattered[s].push_back(p[static_cast<std::size_t>(probeCell[s])]);
   }
+  return rec;
+}
 
-  std::vector<std::vector<Complex>> result(probes.size(), std::vector<Complex>(freqs, 0.0));
+}  // namespace
+
+std::vector<std::vector<Complex>> airSidePressure(const WaterGrid& grid, const Vec3& listener,
+                                                  std::span<const Vec3> probes,
+                                                  std::span<const double> angularFrequencies,
+                                                  const AirProperties& air,
+                                                  const AirWaveOptions& options) {
+  const Recording rec = record(grid, listener, probes, air, options);
+  std::vector<std::vector<Complex>> result(probes.size(),
+                                           std::vector<Complex>(angularFrequencies.size(), 0.0));
   for (std::size_t s = 0; s < probes.size(); ++s) {
-    if (probeCell[s] < 0) continue;
-    const auto cc = static_cast<std::size_t>(probeCell[s]);
-    const auto i = static_cast<double>(cc % n[0]), j = static_cast<double>(cc / n[0] % n[1]),
-               k = static_cast<double>(cc / (static_cast<std::size_t>(n[0]) * n[1]));
-    const Vec3 x = g.world(i + 0.5, j + 0.5, k + 0.5);
-    for (std::size_t q = 0; q < freqs; ++q) {
+    if (!rec.probeFound[s]) continue;
+    for (std::size_t q = 0; q < angularFrequencies.size(); ++q) {
       const double w = angularFrequencies[q];
-      Complex known(0.0);
-      for (const Vec3& y : sources) {
-        const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
-        known += Complex(0.0, w * rho) * std::polar(1.0, -w / c * r) / (4.0 * kPi * r);
-      }
-      result[s][q] = accumulated[s * freqs + q] * dt / pulse.spectrum(w) + known;
+      const Complex rotation = std::polar(1.0, -w * rec.dt);
+      Complex phasor(1.0), sum(0.0);
+      for (const double value : rec.scattered[s]) sum += value * (phasor *= rotation);
+      result[s][q] = sum * rec.dt / rec.pulse.spectrum(w) + rec.known(s, w, air);
     }
   }
   return result;
+}
+
+
+AirSideSpectra airSideSpectra(const WaterGrid& grid, const Vec3& listener,
+                              std::span<const Vec3> probes, const AirProperties& air,
+                              const AirWaveOptions& options) {
+  const Recording rec = record(grid, listener, probes, air, options);
+  std::size_t length = 1;
+  for (const auto& series : rec.scattered) length = std::max(length, series.size());
+  std::size_t padded = 1;
+  while (padded < 2 * length) padded *= 2;
+  AirSideSpectra out;
+  out.binSpacing = 1.0 / (static_cast<double>(padded) * rec.dt);
+  const auto bins = static_cast<std::size_t>(std::floor(options.maxFrequency / out.binSpacing)) + 1;
+  out.pressure.resize(probes.size());
+  Eigen::FFT<double> fft;
+  std::vector<double> input(padded);
+  std::vector<Complex> spectrum;
+  for (std::size_t s = 0; s < probes.size(); ++s) {
+    if (!rec.probeFound[s]) continue;
+    std::fill(input.begin(), input.end(), 0.0);
+    std::copy(rec.scattered[s].begin(), rec.scattered[s].end(), input.begin());
+    fft.fwd(spectrum, input);
+    out.pressure[s].resize(bins);
+    for (std::size_t q = 0; q < bins; ++q) {
+      const double w = 2.0 * kPi * out.binSpacing * static_cast<double>(q);
+      // Sample n is at t = (n + 1)Δt: the transform's e^{−iωnΔt} times e^{−iωΔt}.
+      const Complex value = q == 0 ? Complex(0.0)
+                                   : spectrum[q] * std::polar(rec.dt, -w * rec.dt) / rec.pulse.spectrum(w) +
+                                         rec.known(s, w, air);
+      out.pressure[s][q] = value;
+    }
+  }
+  return out;
 }
 
 }  // namespace fluidsound::acoustics

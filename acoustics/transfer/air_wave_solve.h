@@ -55,4 +55,18 @@ std::vector<std::vector<std::complex<double>>> airSidePressure(
     std::span<const double> angularFrequencies, const AirProperties& air,
     const AirWaveOptions& options);
 
+/// p_L at many points on a regular grid of frequencies, from one solve.
+struct AirSideSpectra {
+  double binSpacing = 0.0;  ///< Δf [Hz]: bin q is at q·Δf
+  /// [probe][bin], bins 0 … the last at or below options.maxFrequency; p_L as airSidePressure
+  /// gives it. Empty for a probe with no air cell.
+  std::vector<std::vector<std::complex<double>>> pressure;
+};
+
+/// @brief airSidePressure on the bins of a fast Fourier transform (Eigen's, kissfft) of the whole
+///        run, zero-padded to at least twice its length: for many probes and frequencies at once.
+AirSideSpectra airSideSpectra(const WaterGrid& grid, const Vec3& listener,
+                              std::span<const Vec3> probes, const AirProperties& air,
+                              const AirWaveOptions& options);
+
 }  // namespace fluidsound::acoustics

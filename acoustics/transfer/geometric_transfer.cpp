@@ -5,11 +5,15 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+
+#include <tbb/parallel_for.h>
 
 #include "acoustics/bubble/instantaneous_frequency.h"
 #include "acoustics/bubble/minnaert.h"
@@ -18,6 +22,7 @@
 #include "acoustics/transfer/rigid_surface_air_field.h"
 #include "acoustics/transfer/water_helmholtz.h"
 #include "acoustics/transfer/water_modes.h"
+#include "acoustics/transfer/wave_air_field.h"
 
 namespace fluidsound::acoustics {
 
@@ -56,18 +61,31 @@ void checkOptions(const GeometricTransferOptions& o) {
                              "0 (the grid's limit) or a frequency in (0, " +
                                  std::to_string(static_cast<int>(kMaxTransferFrequency)) + "] Hz",
                              std::to_string(o.maxFrequency));
+  if (o.waveAir && !(o.waveAir->interval > 0.0 && o.waveAir->interval <= 10.0))
+    throw TransferInputError(TransferInput::Options, "transfer.air_interval",
+                             "a time > 0 and <= 10 s", std::to_string(o.waveAir->interval));
+  if (o.waveAir && !(o.waveAir->cellSize > 0.0 && o.waveAir->cellSize <= 0.1))
+    throw TransferInputError(TransferInput::Options, "transfer.air_cell",
+                             "a length > 0 and <= 0.1 m", std::to_string(o.waveAir->cellSize));
   if (!(o.bandPhaseFactor > 0.0 && o.bandPhaseFactor <= 10.0))
     throw TransferInputError(TransferInput::Options, "transfer.band_phase_factor",
                              "a number in (0, 10]", std::to_string(o.bandPhaseFactor));
 }
 
-/// p_L at every air point of the frame for one listener and frequency.
+/// The wave solves of the air side a frame reads, one per listener; empty: the rigid-surface
+/// field alone.
+using FrameAirFields = std::vector<const WaveAirField*>;
+
+/// p_L at every air point of the frame for one listener and frequency: the air side's wave solve
+/// where it answers (`wave`, may be null), else the rigid-surface field.
 std::vector<Complex> airPressures(const WaterHelmholtz& water, const Vec3& listener, double omega,
-                                  const AirProperties& air) {
+                                  const AirProperties& air, const WaveAirField* wave = nullptr) {
   std::vector<Complex> p;
   p.reserve(water.airPoints().size());
-  for (const AirPoint& point : water.airPoints())
-    p.push_back(rigidSurfaceAirPressure(point.position, listener, omega, air));
+  for (const AirPoint& point : water.airPoints()) {
+    const std::optional<Complex> solved = wave ? wave->at(point.position, omega) : std::nullopt;
+    p.push_back(solved ? *solved : rigidSurfaceAirPressure(point.position, listener, omega, air));
+  }
   return p;
 }
 
@@ -213,13 +231,14 @@ Eigen::VectorXcd adjointSolution(const FrameSample& s, const WaterHelmholtz& wat
 /// surface weights give every listener's value.
 void adjointRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& samples,
                   const WaterHelmholtz& water, const ModalPart* modal, const TransferSetup& setup,
-                  GeometricTransferStats& stats) {
+                  const FrameAirFields& air, GeometricTransferStats& stats) {
   for (const FrameSample& s : samples) {
     const std::vector<Complex> weights =
         water.airWeights(s.stencil, adjointSolution(s, water, modal, setup, stats));
     std::vector<double> transfer;
-    for (const TransferListener& listener : setup.listeners) {
-      const std::vector<Complex> p = airPressures(water, listener.position, s.omega, setup.air);
+    for (std::size_t l = 0; l < setup.listeners.size(); ++l) {
+      const std::vector<Complex> p = airPressures(water, setup.listeners[l].position, s.omega,
+                                                  setup.air, air.empty() ? nullptr : air[l]);
       Complex u(0.0);
       for (std::size_t a = 0; a < p.size(); ++a) u += weights[a] * p[a];
       transfer.push_back(transferFromReciprocalPressure(u, s.omega, setup.liquid));
@@ -261,7 +280,8 @@ int chebyshevBandCount(double lo, double hi, double spread, const TransferSetup&
 GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
                                        const FrameSamples& work, const FrameWaterGrids& grids,
                                        const TransferSetup& setup,
-                                       const GeometricTransferOptions& options) {
+                                       const GeometricTransferOptions& options,
+                                       const FrameAirFields& air) {
   const auto start = std::chrono::steady_clock::now();
   GeometricTransferStats stats;
   const WaterHelmholtz water(grids.open(frame), setup.liquid.soundSpeed, options.lossFactor);
@@ -301,14 +321,22 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
         ringingBubble(tracks.bubbles[b], setup.liquid, setup.model).deep.dampingConstant;
     samples.push_back({b, s, omega, damping, std::move(stencil), above});
   }
+  // Samples the air side's wave solve answers take the adjoint route, exact at their own
+  // frequency: the air column's resonances are narrower than the bands.
+  std::vector<FrameSample> airSamples;
+  if (!air.empty()) {
+    const double limit = 2.0 * std::numbers::pi * air.front()->maxFrequency();
+    const auto solved = std::stable_partition(samples.begin(), samples.end(),
+                                              [&](const FrameSample& s) { return s.omega > limit; });
+    airSamples.assign(std::make_move_iterator(solved), std::make_move_iterator(samples.end()));
+    samples.erase(solved, samples.end());
+  }
   try {
-    if (!samples.empty()) {
-      double lo = samples.front().omega, hi = lo;
-      for (const FrameSample& s : samples) lo = std::min(lo, s.omega), hi = std::max(hi, s.omega);
-      bool widened = false;
-      const int bands =
-          chebyshevBandCount(lo, hi, pathSpread(water, setup), setup, options, widened);
-      std::optional<ModalPart> modal;
+    std::optional<ModalPart> modal;
+    if (!samples.empty() || !airSamples.empty()) {
+      double hi = 0.0;
+      for (const auto* list : {&samples, &airSamples})
+        for (const FrameSample& s : *list) hi = std::max(hi, s.omega);
       const double cut = kModalCut * hi / setup.liquid.soundSpeed;
       WaterModes modes = lowestWaterModes(water, cut * cut, kMaxModes);
       ++stats.factorisations;
@@ -319,6 +347,17 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
       } else {
         ++stats.modeLimitedFrames;
       }
+    }
+    if (!airSamples.empty()) {
+      adjointRoute(tracks, airSamples, water, modal ? &*modal : nullptr, setup, air, stats);
+      stats.airSamples += airSamples.size();
+    }
+    if (!samples.empty()) {
+      double lo = samples.front().omega, hi = lo;
+      for (const FrameSample& s : samples) lo = std::min(lo, s.omega), hi = std::max(hi, s.omega);
+      bool widened = false;
+      const int bands =
+          chebyshevBandCount(lo, hi, pathSpread(water, setup), setup, options, widened);
       if (modal && static_cast<std::size_t>(bands) < samples.size()) {
         reciprocalRoute(tracks, samples, water, *modal, ChebyshevBands(lo, hi, bands), setup,
                         options.lossFactor, stats);
@@ -326,7 +365,7 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
         stats.bands += bands;
         stats.widenedFrames += widened ? 1 : 0;
       } else {
-        adjointRoute(tracks, samples, water, modal ? &*modal : nullptr, setup, stats);
+        adjointRoute(tracks, samples, water, modal ? &*modal : nullptr, setup, {}, stats);
         ++stats.adjointFrames;
       }
     }
@@ -337,6 +376,50 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
+
+/// The air side's wave solves of a run: one per listener every `interval` seconds at the frames
+/// that have samples, each from the frame nearest its time; a frame reads the solve nearest it.
+/// All are solved up front, in parallel, so the values do not depend on the thread count.
+class AirSolves {
+ public:
+  AirSolves() = default;
+  AirSolves(const std::vector<std::pair<int, FrameSamples>>& work, const FrameWaterGrids& grids,
+            const TransferSetup& setup, const WaveAirOptions& options)
+      : fps_(setup.fps), interval_(options.interval) {
+    std::vector<int> indices;
+    for (const auto& [frame, samples] : work) indices.push_back(indexOf(frame));
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    const std::size_t listeners = setup.listeners.size();
+    std::vector<std::unique_ptr<WaveAirField>> fields(indices.size() * listeners);
+    tbb::parallel_for(std::size_t{0}, fields.size(), [&](std::size_t n) {
+      const int index = indices[n / listeners];
+      const int frame = std::clamp(static_cast<int>(std::lround(index * interval_ * fps_)), 0, setup.lastFrame);
+      fields[n] = std::make_unique<WaveAirField>(grids.open(frame), setup.listeners[n % listeners].position,
+                                                 setup.air, options);
+    });
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+      FrameAirFields& entry = byIndex_[indices[i]];
+      for (std::size_t l = 0; l < listeners; ++l) entry.push_back(fields[i * listeners + l].get());
+    }
+    fields_ = std::move(fields);
+  }
+  /// The fields frame `frame` reads (empty without the wave air side).
+  const FrameAirFields& forFrame(int frame) const {
+    static const FrameAirFields none;
+    const auto found = byIndex_.find(indexOf(frame));
+    return found == byIndex_.end() ? none : found->second;
+  }
+  std::size_t count() const { return fields_.size(); }
+
+ private:
+  int indexOf(int frame) const {
+    return interval_ > 0.0 ? static_cast<int>(std::lround(frame / fps_ / interval_)) : 0;
+  }
+  double fps_ = 30.0, interval_ = 0.0;
+  std::vector<std::unique_ptr<WaveAirField>> fields_;
+  std::map<int, FrameAirFields> byIndex_;
+};
 
 void addStats(GeometricTransferStats& total, const GeometricTransferStats& frame) {
   total.reciprocalFrames += frame.reciprocalFrames;
@@ -351,6 +434,7 @@ void addStats(GeometricTransferStats& total, const GeometricTransferStats& frame
   total.maxFrequency = std::max(total.maxFrequency, frame.maxFrequency);
   total.samplesOutsideLiquid += frame.samplesOutsideLiquid;
   total.samplesAboveLimit += frame.samplesAboveLimit;
+  total.airSamples += frame.airSamples;
   total.solveSeconds += frame.solveSeconds;
 }
 
@@ -364,10 +448,13 @@ TransferResult computeGeometricTransfer(BubbleTrackSet tracks, const FrameWaterG
   checkOptions(options);
   const std::vector<std::pair<int, FrameSamples>> work = samplesByFrame(tracks, setup);
   std::vector<GeometricTransferStats> frameStats(work.size());
+  const AirSolves air = options.waveAir ? AirSolves(work, frames, setup, *options.waveAir) : AirSolves();
   forEachFrameInChunks(work, observer, [&](std::size_t f) {
-    frameStats[f] = transferOfFrame(tracks, work[f].first, work[f].second, frames, setup, options);
+    frameStats[f] = transferOfFrame(tracks, work[f].first, work[f].second, frames, setup, options,
+                                    air.forFrame(work[f].first));
   });
   TransferResult result;
+  result.geometric.airSolves = air.count();
   for (const GeometricTransferStats& s : frameStats) addStats(result.geometric, s);
   result.bubbles = tracks.bubbles.size();
   for (const auto& frame : work) result.samples += frame.second.size();

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "acoustics/transfer/transfer_stage.h"
 #include "acoustics/transfer/water_grid.h"
+#include "acoustics/transfer/wave_air_field.h"
 
 namespace fluidsound::acoustics {
 
@@ -31,6 +33,10 @@ struct GeometricTransferOptions {
   /// crossings per air wavelength (above it the crossings cannot sample p_L's phase). Else
   /// > 0 and ≤ kMaxTransferFrequency.
   double maxFrequency = 0.0;
+  /// The air side: nothing, the rigid-surface field (free field doubled by the liquid surface,
+  /// nothing in the way); else a wave solve of the air with the frame's liquid and solids in
+  /// place (wave_air_field.h) up to its grid's limit, the rigid-surface field above it.
+  std::optional<WaveAirOptions> waveAir;
 };
 
 inline constexpr double kMaxTransferFrequency = 100000.0;  // [Hz]

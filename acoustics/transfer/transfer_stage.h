@@ -67,6 +67,8 @@ struct GeometricTransferStats {
   double maxFrequency = 0.0;         ///< highest sample frequency [Hz]
   std::size_t samplesOutsideLiquid = 0;  ///< samples with no liquid cell around them: level plane
   std::size_t samplesAboveLimit = 0;     ///< samples above the frequency limit: level plane
+  std::size_t airSolves = 0;   ///< wave solves of the air side (per listener and solve time)
+  std::size_t airSamples = 0;  ///< samples whose p_L came from them (adjoint route)
   double solveSeconds = 0.0;         ///< summed over threads: assembly, factorisation, solves
   bool operator==(const GeometricTransferStats&) const = default;
 };

@@ -19,15 +19,19 @@ using namespace scene_test;
 /// minimalScene() with `transfer` set to the JSON text `block`.
 json withTransfer(const char* block) { return withChange(minimalScene(), "/transfer", block); }
 
-// Claim: model, max_bands, loss_factor and max_frequency land in Scene::transfer as written.
+// Claim: every field lands in Scene::transfer as written.
 TEST(SceneTransfer, EveryFieldReachesItsRecord) {
   const sim::Scene scene =
-      parseScene(withTransfer(R"({"model": "image", "max_bands": 64, "loss_factor": 0.01, "max_frequency": 8000})").dump(),
+      parseScene(withTransfer(R"({"model": "image", "max_bands": 64, "loss_factor": 0.01, "max_frequency": 8000,
+                                  "air": "wave", "air_interval": 0.5, "air_cell": 0.02})").dump(),
                  "tank.json");
   EXPECT_EQ(scene.transfer.model, sim::TransferModel::Image);
   EXPECT_EQ(scene.transfer.maxBands, 64);
   EXPECT_EQ(scene.transfer.lossFactor, 0.01);
   EXPECT_EQ(scene.transfer.maxFrequency, 8000.0);
+  EXPECT_EQ(scene.transfer.air, sim::AirModel::Wave);
+  EXPECT_EQ(scene.transfer.airInterval, 0.5);
+  EXPECT_EQ(scene.transfer.airCell, 0.02);
 }
 
 // Claim: without the block, or with an empty one, the model is the image-source one (the default
@@ -72,6 +76,7 @@ const std::string kBands =
 const std::string kLoss = "a number > 0 and <= 0.1 (the water's loss factor)";
 const std::string kLimit = "a frequency > 0 and <= 100000 Hz (the geometric model's limit)";
 const std::string kModels = R"("geometric" or "image")";
+const std::string kAir = R"("rigid_surface" or "wave")";
 
 const std::vector<TransferCase> kTransferCases = {
     {"not_an_object", "[]", "transfer", "an object of transfer-model settings (docs/transfer.md)",
@@ -89,8 +94,16 @@ const std::vector<TransferCase> kTransferCases = {
     {"negative_loss", R"({"loss_factor": -0.001})", "transfer.loss_factor", kLoss, "-0.001"},
     {"zero_limit", R"({"max_frequency": 0})", "transfer.max_frequency", kLimit, "0"},
     {"limit_too_high", R"({"max_frequency": 200001})", "transfer.max_frequency", kLimit, "200001"},
+    {"unknown_air", R"({"air": "fdtd"})", "transfer.air", kAir, R"("fdtd")"},
+    {"misspelt_air", R"({"air": "wav"})", "transfer.air", kAir + R"( (did you mean "wave"?))",
+     R"("wav")"},
+    {"zero_air_interval", R"({"air_interval": 0})", "transfer.air_interval",
+     "a time > 0 and <= 10 s (between air solves)", "0"},
+    {"air_cell_too_large", R"({"air_cell": 0.5})", "transfer.air_cell",
+     "a length > 0 and <= 0.1 m (the air grid's cell)", "0.5"},
     {"unknown_key", R"({"maxBands": 64})", "transfer.maxBands",
-     "one of model, max_bands, loss_factor, max_frequency (did you mean 'max_bands'?)",
+     "one of model, max_bands, loss_factor, max_frequency, air, air_interval, air_cell (did you "
+     "mean 'max_bands'?)",
      "an unknown key"},
 };
 

@@ -150,4 +150,37 @@ acoustics::WaterGrid hemisphericalBowl(const VesselShape& vessel) {
   });
 }
 
+acoustics::WaterGrid tubeOnLiquid(double radius, double top, double cellSize) {
+  const double h = cellSize;
+  const int across = static_cast<int>(std::lround(0.12 / h));
+  const int rows = static_cast<int>(std::lround((top + 0.09) / h));
+  acoustics::WaterGrid g;
+  g.cells = {across, rows, across};
+  g.cellSize = h;
+  g.origin = {-0.06, -0.02, -0.06};
+  g.phi.resize(g.cellCount());
+  for (int k = 0; k < across; ++k)
+    for (int j = 0; j < rows; ++j)
+      for (int i = 0; i < across; ++i)
+        g.phi[g.cellIndex(i, j, k)] = static_cast<float>(g.cellCentre(i, j, k)[1]);
+  for (int a = 0; a < 3; ++a) {
+    std::array<int, 3> f = g.cells;
+    ++f[a];
+    g.faceOpen[a].assign(static_cast<std::size_t>(f[0]) * f[1] * f[2], 1.0f);
+    if (a == 1) continue;
+    for (int k = 0; k < f[2]; ++k)
+      for (int j = 0; j < f[1]; ++j)
+        for (int i = 0; i < f[0]; ++i) {
+          std::array<int, 3> lo{i, j, k}, hi{i, j, k};
+          --lo[a];
+          if (lo[a] < 0 || hi[a] >= g.cells[a]) continue;
+          const Vec3 x0 = g.cellCentre(lo[0], lo[1], lo[2]), x1 = g.cellCentre(hi[0], hi[1], hi[2]);
+          if (x0[1] < 0.0 || x0[1] > top) continue;
+          if ((std::hypot(x0[0], x0[2]) < radius) != (std::hypot(x1[0], x1[2]) < radius))
+            g.faceOpen[a][g.faceIndex(a, i, j, k)] = 0.0f;
+        }
+  }
+  return g;
+}
+
 }  // namespace fluidsound::test

@@ -73,4 +73,10 @@ acoustics::WaterGrid cylindricalTank(const VesselShape& vessel);
 /// below the rim; the flat surface passes through the centre. `depth` is ignored.
 acoustics::WaterGrid hemisphericalBowl(const VesselShape& vessel);
 
+/// A thin rigid tube of `radius` [m] standing on a flat liquid (y < 0) up to y = `top` [m], axis
+/// x = z = 0, at `cellSize` cells over x, z ∈ [−0.06, 0.06] m and y from −0.02 m to 7 cm above the
+/// top: every x- and z-face between a cell centre inside the radius and one outside is closed
+/// between y = 0 and the top (a staircase wall of no thickness; the air side's glass).
+acoustics::WaterGrid tubeOnLiquid(double radius, double top, double cellSize);
+
 }  // namespace fluidsound::test

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "tests/support/water_grid_shapes.h"
+
 namespace fluidsound::acoustics {
 namespace {
 
@@ -65,31 +67,28 @@ TEST(AirWaveSolve, AFlatRigidSurfaceGivesTheSourceAndItsImage) {
   }
 }
 
-/// A thin rigid tube of `radius` standing on the liquid (y < 0) up to y = `top`, axis x = z = 0,
-/// at 1 cm cells: every x- and z-face between a cell centre inside the radius and one outside
-/// is closed between y = 0 and the top (a staircase wall of no thickness).
-WaterGrid tubeOnLiquid(double radius, double top) {
-  const double h = 0.01;
-  const int rows = static_cast<int>(std::lround((top + 0.07) / h));
-  WaterGrid g = flatSurface({12, rows, 12}, h, {-0.06, -0.02, -0.06}, 0.0);
-  for (int a : {0, 2}) {
-    std::array<int, 3> f = g.cells;
-    ++f[a];
-    g.faceOpen[a].assign(static_cast<std::size_t>(f[0]) * f[1] * f[2], 1.0f);
-    for (int k = 0; k < f[2]; ++k)
-      for (int j = 0; j < f[1]; ++j)
-        for (int i = 0; i < f[0]; ++i) {
-          std::array<int, 3> lo{i, j, k}, hi{i, j, k};
-          --lo[a];
-          if (lo[a] < 0 || hi[a] >= g.cells[a]) continue;
-          const Vec3 x0 = g.cellCentre(lo[0], lo[1], lo[2]), x1 = g.cellCentre(hi[0], hi[1], hi[2]);
-          if (x0[1] < 0.0 || x0[1] > top) continue;
-          if ((std::hypot(x0[0], x0[2]) < radius) != (std::hypot(x1[0], x1[2]) < radius))
-            g.faceOpen[a][g.faceIndex(a, i, j, k)] = 0.0f;
-        }
-  }
-  g.faceOpen[1].assign(static_cast<std::size_t>(g.cells[0]) * (g.cells[1] + 1) * g.cells[2], 1.0f);
-  return g;
+// Reference: the direct Fourier sum of the same run (airSidePressure) at the bins' own
+// frequencies; the FFT is the same sum, so they agree to rounding (1e-9 relative).
+TEST(AirWaveSolve, TheFastTransformGivesTheDirectSumAtItsBins) {
+  const AirProperties air;
+  const WaterGrid grid = flatSurface({8, 6, 8}, 0.01, {-0.04, -0.02, -0.04}, 0.003);
+  AirWaveOptions options;
+  options.ringTime = 0.005;
+  options.absorbingCells = 6;
+  options.groundHeight = 0.003;
+  const std::vector<Vec3> probes{{0.005, 0.005, 0.005}, {-0.025, 0.015, 0.015}};
+  const Vec3 listener{0.3, 0.5, 0.1};
+  const AirSideSpectra fast = airSideSpectra(grid, listener, probes, air, options);
+  ASSERT_EQ(fast.pressure.size(), 2u);
+  ASSERT_GT(fast.pressure[0].size(), 100u);
+  const std::vector<std::size_t> bins{3, 40, fast.pressure[0].size() - 1};
+  std::vector<double> w;
+  for (std::size_t q : bins) w.push_back(2.0 * kPi * fast.binSpacing * static_cast<double>(q));
+  const auto direct = airSidePressure(grid, listener, probes, w, air, options);
+  for (std::size_t s = 0; s < probes.size(); ++s)
+    for (std::size_t b = 0; b < bins.size(); ++b)
+      EXPECT_NEAR(std::abs(fast.pressure[s][bins[b]] - direct[s][b]) / std::abs(direct[s][b]), 0.0, 1e-9)
+          << "probe " << s << " bin " << bins[b];
 }
 
 // Reference: a tube closed at one end resonates first at c_a/(4(L + 0.6133 r)) (the unflanged
@@ -110,7 +109,7 @@ TEST(AirWaveSolve, AClosedTubeResonatesAtItsQuarterWaveWithTheEndCorrection) {
   options.absorbingCells = 10;
   const Vec3 probe{0.005, 0.005, 0.005}, listener{0.005, 0.4, 0.005};
   for (const double column : {0.12, 0.09, 0.06, 0.03}) {
-    const WaterGrid tube = tubeOnLiquid(radius, column);
+    const WaterGrid tube = test::tubeOnLiquid(radius, column, 0.01);
     double area = 0.0;  // the staircase tube's cross-section [m²]
     for (int k = 0; k < tube.cells[2]; ++k)
       for (int i = 0; i < tube.cells[0]; ++i) {
