@@ -72,8 +72,11 @@ WaterGrid mergedGrid(const WaterGrid& grid, int factor) {
 
 std::optional<double> groundPlaneHeight(const WaterGrid& g) {
   std::optional<int> shared;
+  // The grid's top face is the fluid's domain wall, not a wall for the air: a top cell is
+  // passable by its lower face instead.
   const auto passable = [&](int i, int j, int k) {
-    return g.phi[g.cellIndex(i, j, k)] >= 0.0f && faceOpenAt(g, 1, i, j + 1, k) > 0.5;
+    const int face = j + 1 < g.cells[1] ? j + 1 : j;
+    return g.phi[g.cellIndex(i, j, k)] >= 0.0f && faceOpenAt(g, 1, i, face, k) > 0.5;
   };
   for (int k = 0; k < g.cells[2]; ++k)
     for (int i = 0; i < g.cells[0]; ++i) {
