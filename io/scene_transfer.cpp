@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "acoustics/transfer/geometric_transfer.h"
 
@@ -14,27 +16,16 @@ namespace {
 constexpr double kMaxLossFactor = 0.1;
 constexpr std::uint64_t kMinBands = 2;
 
-sim::TransferModel transferModel(const JsonValidator& check, const nlohmann::json& value,
-                                 const std::string& path) {
-  std::string expected = R"("geometric" or "image")";
+/// `first` or `second` by its JSON string; else a failure naming both, the nearer as a hint.
+template <typename T>
+T eitherOf(const JsonValidator& check, const nlohmann::json& value, const std::string& path,
+           std::pair<std::string_view, T> first, std::pair<std::string_view, T> second) {
+  std::string expected = quotedText(first.first) + " or " + quotedText(second.first);
   if (value.is_string()) {
     const std::string& text = value.get_ref<const std::string&>();
-    if (text == "geometric") return sim::TransferModel::Geometric;
-    if (text == "image") return sim::TransferModel::Image;
-    const std::string suggestion = closestKey(text, {"geometric", "image"}, true);
-    if (!suggestion.empty()) expected += " (did you mean " + quotedText(suggestion) + "?)";
-  }
-  check.fail(path, expected, describe(value));
-}
-
-sim::AirModel airModel(const JsonValidator& check, const nlohmann::json& value,
-                       const std::string& path) {
-  std::string expected = R"("rigid_surface" or "wave")";
-  if (value.is_string()) {
-    const std::string& text = value.get_ref<const std::string&>();
-    if (text == "rigid_surface") return sim::AirModel::RigidSurface;
-    if (text == "wave") return sim::AirModel::Wave;
-    const std::string suggestion = closestKey(text, {"rigid_surface", "wave"}, true);
+    if (text == first.first) return first.second;
+    if (text == second.first) return second.second;
+    const std::string suggestion = closestKey(text, {first.first, second.first}, true);
     if (!suggestion.empty()) expected += " (did you mean " + quotedText(suggestion) + "?)";
   }
   check.fail(path, expected, describe(value));
@@ -49,7 +40,9 @@ sim::TransferSettings readTransferSettings(const JsonValidator& check,
                                          "air", "air_interval", "air_cell"});
   sim::TransferSettings s;
   if (const nlohmann::json* model = findMember(object, "model"))
-    s.model = transferModel(check, *model, memberPath(path, "model"));
+    s.model = eitherOf(check, *model, memberPath(path, "model"),
+                       std::pair{std::string_view("geometric"), sim::TransferModel::Geometric},
+                       std::pair{std::string_view("image"), sim::TransferModel::Image});
   if (const nlohmann::json* bands = findMember(object, "max_bands")) {
     const auto limit = static_cast<std::uint64_t>(acoustics::kMaxTransferBands);
     s.maxBands = static_cast<int>(check.wholeNumber(
@@ -65,7 +58,9 @@ sim::TransferSettings readTransferSettings(const JsonValidator& check,
                                   "a frequency > 0 and <= 100000 Hz (the geometric model's limit)",
                                   [](double v) { return v > 0 && v <= acoustics::kMaxTransferFrequency; });
   if (const nlohmann::json* air = findMember(object, "air"))
-    s.air = airModel(check, *air, memberPath(path, "air"));
+    s.air = eitherOf(check, *air, memberPath(path, "air"),
+                     std::pair{std::string_view("rigid_surface"), sim::AirModel::RigidSurface},
+                     std::pair{std::string_view("wave"), sim::AirModel::Wave});
   if (const nlohmann::json* interval = findMember(object, "air_interval"))
     s.airInterval = check.number(*interval, memberPath(path, "air_interval"),
                                  "a time > 0 and <= 10 s (between air solves)",
