@@ -25,8 +25,10 @@ struct WaveAirOptions {
   double interval = 0.25;
   /// Sound simulated after the pulse has crossed the grid [s]: the air column's ring.
   double ringTime = 0.03;
-  /// Cells of absorbing layer around the air grid.
-  int absorbingCells = 10;
+  /// Cells of absorbing layer around the air grid. 6 (6 cm at 1 cm): the glass pour's 1 cm air grid
+  /// is 16 × 20 × 16 cells, so a 10-cell layer made 90 % of the cells it steps; the
+  /// WaveAirField tests measure the same figures with 6 as with 10.
+  int absorbingCells = 6;
 };
 
 /// @brief The grid with `factor`³ cells merged into one (`factor` divides every count): φ and the
