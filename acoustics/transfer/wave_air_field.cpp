@@ -67,6 +67,31 @@ WaterGrid mergedGrid(const WaterGrid& grid, int factor) {
           m.faceOpen[a][m.faceIndex(a, i, j, k)] = static_cast<float>(sum / (factor * factor));
         }
   }
+  // A merged cell that a wall crosses (a closed fine face between two of its own fine cells)
+  // holds air from both sides of the wall in one pressure node, which would let sound through
+  // it: it is shut instead, so the wall is at most one merged cell thick but never leaks.
+  for (int k = 0; k < m.cells[2]; ++k)
+    for (int j = 0; j < m.cells[1]; ++j)
+      for (int i = 0; i < m.cells[0]; ++i) {
+        bool walled = false;
+        for (int a = 0; a < 3 && !walled; ++a)
+          for (int w = 0; w < factor && !walled; ++w)
+            for (int v = 0; v < factor && !walled; ++v)
+              for (int s = 1; s < factor && !walled; ++s) {
+                std::array<int, 3> fine{i * factor, j * factor, k * factor};
+                fine[a] += s;
+                fine[(a + 1) % 3] += w;
+                fine[(a + 2) % 3] += v;
+                walled = faceOpenAt(grid, a, fine[0], fine[1], fine[2]) < 0.5;
+              }
+        if (!walled) continue;
+        for (int a = 0; a < 3; ++a) {
+          std::array<int, 3> up{i, j, k};
+          ++up[a];
+          m.faceOpen[a][m.faceIndex(a, i, j, k)] = 0.0f;
+          m.faceOpen[a][m.faceIndex(a, up[0], up[1], up[2])] = 0.0f;
+        }
+      }
   return m;
 }
 

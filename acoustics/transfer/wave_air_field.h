@@ -34,7 +34,8 @@ struct WaveAirOptions {
 /// @brief The grid with `factor`³ cells merged into one (`factor` divides every count): φ and the
 ///        open volume are the block means; a merged face's open fraction is the mean, over its
 ///        factor² columns of fine cells, of the least open fine face the column crosses between
-///        the two merged centres, so a thin wall inside a merged cell still closes it.
+///        the two merged centres; a merged cell that a wall crosses (a closed fine face inside
+///        it) is shut, so a thin wall becomes at most one merged cell thick and never leaks.
 WaterGrid mergedGrid(const WaterGrid& grid, int factor);
 
 /// @brief The height y [m] of a rigid horizontal plane that every column on the grid's four

@@ -33,8 +33,9 @@ std::vector<fs::path> filesEndingWith(const fs::path& folder, const std::string&
 }
 
 // Claim (issues 5, 6): every example scene parses, its meshes load (exist, read, closed) on its
-// grid, and it is heard by a stereo pair "left"/"right" in air above the domain. Reference: the
-// rules of docs/scene.md and docs/scenes.md.
+// grid, and it is heard by a stereo pair "left"/"right" in air above the domain — except
+// glass_hidden's "right", at the table's height behind the glass on purpose (issue 20: a listener
+// the glass hides). Reference: the rules of docs/scene.md and docs/scenes.md.
 TEST(ExampleScenes, EverySceneParsesAndLoadsItsMeshes) {
   const std::vector<fs::path> scenes = filesEndingWith(sourceDir() / "scenes", ".scene.json");
   EXPECT_GE(scenes.size(), 6u)
@@ -53,8 +54,9 @@ TEST(ExampleScenes, EverySceneParsesAndLoadsItsMeshes) {
     EXPECT_EQ(scene.listeners[0].name, "left");
     EXPECT_EQ(scene.listeners[1].name, "right");
     for (const sim::Listener& listener : scene.listeners)
-      EXPECT_GE(listener.position[1], scene.domain.max[1])
-          << listener.name << " is not above the domain";
+      if (!(file.filename() == "glass_hidden.scene.json" && listener.name == "right"))
+        EXPECT_GE(listener.position[1], scene.domain.max[1])
+            << listener.name << " is not above the domain";
   }
 }
 

@@ -34,7 +34,8 @@ WaterGrid openAir() {
 }
 
 // Claim: a wall of closed faces through the middle of a merged cell still separates it from its
-// neighbour — the merged face between them is closed — and faces with no wall stay open.
+// neighbour: the merged cell it crosses is shut (every face closed, else it would join air from
+// both sides of the wall), and a cell no wall crosses keeps its open faces.
 TEST(WaveAirField, MergingKeepsAThinWallInsideAMergedCell) {
   WaterGrid fine = openAir();
   for (int k = 0; k < 2; ++k)
@@ -42,7 +43,8 @@ TEST(WaveAirField, MergingKeepsAThinWallInsideAMergedCell) {
   const WaterGrid merged = mergedGrid(fine, 2);
   ASSERT_EQ(merged.cells, (std::array<int, 3>{2, 1, 1}));
   EXPECT_EQ(merged.faceOpen[0][merged.faceIndex(0, 1, 0, 0)], 0.0f);
-  EXPECT_EQ(merged.faceOpen[1][merged.faceIndex(1, 1, 1, 0)], 1.0f);
+  EXPECT_EQ(merged.faceOpen[1][merged.faceIndex(1, 0, 1, 0)], 0.0f);  // the walled cell's top
+  EXPECT_EQ(merged.faceOpen[1][merged.faceIndex(1, 1, 1, 0)], 1.0f);  // its neighbour's top
   EXPECT_EQ(merged.cellSize, 0.01);
   EXPECT_FLOAT_EQ(merged.phi[0], 1.0f);
 }
