@@ -28,7 +28,8 @@ import sys
 
 # The folders whose sources are checked, upstream first: each is one CMake target's sources.
 LIBRARY_FOLDERS = ("sim/core", "sim/fluid", "sim/bubbles", "sim", "acoustics/bubble",
-                   "acoustics/transfer", "acoustics/synthesis", "acoustics/analysis", "io", "tools")
+                   "acoustics/transfer", "acoustics/synthesis", "acoustics/analysis",
+                   "acoustics/binaural", "io", "tools")
 # The top-level folders a project include starts with (anything else is a system header).
 PROJECT_TOP = ("sim", "acoustics", "io", "tools", "tests")
 CXX_SUFFIXES = (".h", ".hpp", ".cpp", ".cc", ".inl")
@@ -49,6 +50,7 @@ IO_RECORD_HEADERS = {
     "acoustics/transfer/level_set_frames.h": "the frames' level sets as the transfer stage reads them: io implements it for frames/NNNN.vdb",
     "acoustics/transfer/geometric_transfer.h": "the limit of the scene's transfer.max_bands (kMaxTransferBands), checked as the block is read",
     "acoustics/analysis/spectrogram_power.h": "the pooled spectrogram record that spectrogram.png draws",
+    "acoustics/binaural/hrir_table.h": "a head's impulse responses as a SOFA file holds them",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')
 LINK_KEYWORDS = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE",

@@ -1,0 +1,21 @@
+// io/hrir_file.h — reads a head's measured impulse responses from a SOFA file (AES69-2015,
+// SimpleFreeFieldHRIR) through libmysofa (Debian libmysofa-dev, BSD-3), whose runtime package ships
+// the MIT KEMAR set (Gardner & Martin 1995). docs/binaural.md.
+#pragma once
+
+#include <filesystem>
+
+#include "acoustics/binaural/hrir_table.h"
+
+namespace fluidsound::io {
+
+/// The MIT KEMAR set (normal pinna) as Debian's libmysofa1 installs it.
+std::filesystem::path defaultHrirFile();
+
+/// @brief The impulse responses of `sofa`, its source positions as unit vectors in the head's frame
+///        (x ahead, y left, z up) and its two receivers as the left and right ear.
+/// @throws InputError naming the file and what was expected: missing or unreadable, not a SOFA
+///         HRIR set libmysofa accepts, not two receivers, no measurement
+acoustics::HrirTable readHrirTable(const std::filesystem::path& sofa);
+
+}  // namespace fluidsound::io
