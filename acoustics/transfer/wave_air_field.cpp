@@ -140,8 +140,8 @@ WaveAirField::WaveAirField(const WaterGrid& frame, const Vec3& listener, const A
     return i >= 0 && j >= 0 && k >= 0 && i < n[0] && j < n[1] && k < n[2] &&
            grid_.phi[grid_.cellIndex(i, j, k)] >= 0.0f;
   };
-  std::vector<Vec3> solvePoints;            // probe cells, then the cells beyond them
-  std::vector<long> beyond;                 // index in solvePoints of each probe's outer cell, or −1
+  std::vector<Vec3> solvePoints;         // the probes' cells, then the cells beyond them
+  std::vector<std::optional<Vec3>> outer;  // per probe, the centre of the cell beyond it
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
@@ -155,7 +155,7 @@ WaveAirField::WaveAirField(const WaterGrid& frame, const Vec3& listener, const A
         const Vec3 centre = grid_.cellCentre(i, j, k);
         solvePoints.push_back(centre);
         probePoint_.push_back(centre);
-        beyond.push_back(-1);
+        outer.emplace_back();
         for (const int a : {1, 0, 2})
           for (const int side : {-1, 1}) {
             std::array<int, 3> in{i, j, k}, out{i, j, k};
@@ -164,22 +164,20 @@ WaveAirField::WaveAirField(const WaterGrid& frame, const Vec3& listener, const A
             // cell may lie there.
             const int ci = std::clamp(out[0], 0, n[0] - 1), cj = std::clamp(out[1], 0, n[1] - 1),
                       ck = std::clamp(out[2], 0, n[2] - 1);
-            if (beyond.back() != -1 || !liquid(in[0], in[1], in[2]) || !open(ci, cj, ck))
-              continue;
-            beyond.back() = -2 - a * 2 - (side > 0);  // resolved below
-            Vec3 surface = centre;
+            if (outer.back() || !liquid(in[0], in[1], in[2]) || !open(ci, cj, ck)) continue;
+            Vec3 surface = centre, beyond = centre;
             surface[a] += side * 0.5 * h;
+            beyond[a] -= side * h;
             probePoint_.back() = surface;
+            outer.back() = beyond;
           }
       }
   const std::size_t probes = probePoint_.size();
+  std::vector<long> beyond(probes, -1);  // index in solvePoints of each probe's outer cell
   for (std::size_t s = 0; s < probes; ++s) {
-    if (beyond[s] == -1) continue;
-    const int code = static_cast<int>(-2 - beyond[s]), a = code / 2, side = code % 2 ? 1 : -1;
-    Vec3 outer = solvePoints[s];
-    outer[a] -= side * h;
+    if (!outer[s]) continue;
     beyond[s] = static_cast<long>(solvePoints.size());
-    solvePoints.push_back(outer);
+    solvePoints.push_back(*outer[s]);
   }
   AirWaveOptions solve;
   solve.maxFrequency = maxFrequency_;
