@@ -82,6 +82,8 @@ class AirGrid {
   bool air(std::size_t c) const { return air_[c]; }
   double volume(std::size_t c) const { return volume_[c]; }
   double open(int a, std::size_t f) const { return open_[a][f]; }
+  /// The open fractions of the faces normal to axis a, indexed as face() does.
+  const double* openFractions(int a) const { return open_[a].data(); }
   double cellSize() const { return grid_.cellSize; }
   /// World position of a point given in extended-cell units (cell i spans [i, i+1]).
   Vec3 world(double i, double j, double k) const {
@@ -292,19 +294,27 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
 
   const std::array<std::size_t, 3> stride{1, std::size_t(n[0]), std::size_t(n[0]) * n[1]};
   for (long step = 0; step < steps; ++step) {
-    // v^{n+1/2} from p^n on the open faces.
+    // v^{n+1/2} from p^n on the open faces, a row of faces along x at a time (faces and cells
+    // are both contiguous in i); the outer faces of the layer are closed and skipped.
+    const double push = dt / (rho * h);
     tbb::parallel_for(tbb::blocked_range<int>(0, n[2]), [&](const tbb::blocked_range<int>& r) {
       for (int k = r.begin(); k < r.end(); ++k)
-        for (int a = 0; a < 3; ++a)
-          for (int j = 0; j < n[1] + (a == 1); ++j)
-            for (int i = 0; i < n[0] + (a == 0); ++i) {
-              if (a == 2 && k == 0) continue;
-              const std::size_t f = g.face(a, i, j, k);
-              if (g.open(a, f) <= 0.0) continue;
-              const std::size_t hi = g.cell(i, j, k), lo = hi - stride[a];
-              const std::array<int, 3> at{i, j, k};
-              v[a][f] = faceDecay[a][at[a]] * (v[a][f] - dt / (rho * h) * (p[hi] - p[lo]));
+        for (int a = 0; a < 3; ++a) {
+          if (a == 2 && k == 0) continue;
+          const double* open = g.openFractions(a);
+          double* va = v[a].data();
+          for (int j = (a == 1 ? 1 : 0); j < n[1]; ++j) {
+            const std::size_t face0 = g.face(a, 0, j, k), cell0 = g.cell(0, j, k);
+            const double rowDecay = a == 1 ? faceDecay[1][j] : faceDecay[2][k];
+            for (int i = (a == 0 ? 1 : 0); i < n[0]; ++i) {
+              const std::size_t f = face0 + i;
+              if (open[f] <= 0.0) continue;
+              const std::size_t hi = cell0 + i, lo = hi - stride[a];
+              const double decayHere = a == 0 ? faceDecay[0][i] : rowDecay;
+              va[f] = decayHere * (va[f] - push * (p[hi] - p[lo]));
             }
+          }
+        }
     });
     const double t = (step + 0.5) * dt;
     for (const RigidFace& rf : rigid) {
@@ -315,27 +325,32 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
       }
       vInc[rf.axis][rf.face] = -rf.rigid * normal;
     }
-    // p^{n+1} from the flux through each face: open part v, rigid part −v_inc.
+    // p^{n+1} from the flux through each face: open part v, rigid part −v_inc; a row of cells
+    // along x at a time. A cell's upper face along x, y, z is 1, n_x, n_x·n_y faces on.
+    const std::array<std::size_t, 3> upFace{1, std::size_t(n[0]), std::size_t(n[0]) * n[1]};
+    const double stiffness = dt * rho * c * c;
     tbb::parallel_for(tbb::blocked_range<int>(0, n[2]), [&](const tbb::blocked_range<int>& r) {
       for (int k = r.begin(); k < r.end(); ++k)
-        for (int j = 0; j < n[1]; ++j)
+        for (int j = 0; j < n[1]; ++j) {
+          const std::size_t cell0 = g.cell(0, j, k);
+          const std::array<std::size_t, 3> face0{g.face(0, 0, j, k), g.face(1, 0, j, k), g.face(2, 0, j, k)};
           for (int i = 0; i < n[0]; ++i) {
-            const std::size_t cc = g.cell(i, j, k);
+            const std::size_t cc = cell0 + i;
             if (!g.air(cc)) continue;
-            const double factor = dt * rho * c * c / (h * g.volume(cc));
+            const double factor = stiffness / (h * g.volume(cc));
             const std::array<int, 3> at{i, j, k};
             double sum = 0.0;
             for (int a = 0; a < 3; ++a) {
-              std::array<int, 3> up = at;
-              ++up[a];
-              const std::size_t fl = g.face(a, i, j, k), fh = g.face(a, up[0], up[1], up[2]);
-              const double flux = g.open(a, fh) * v[a][fh] + vInc[a][fh] - g.open(a, fl) * v[a][fl] - vInc[a][fl];
+              const std::size_t fl = face0[a] + i, fh = fl + upFace[a];
+              const double* open = g.openFractions(a);
+              const double flux = open[fh] * v[a][fh] + vInc[a][fh] - open[fl] * v[a][fl] - vInc[a][fl];
               double& pa = part[a][cc];
               pa = cellDecay[a][at[a]] * (pa - factor * flux);
               sum += pa;
             }
             p[cc] = sum;
           }
+        }
     });
     for (std::size_t s = 0; s < probes.size(); ++s)
       if (probeCell[s] >= 0) rec.scattered[s].push_back(p[static_cast<std::size_t>(probeCell[s])]);
