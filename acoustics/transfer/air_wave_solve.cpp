@@ -13,6 +13,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "acoustics/transfer/rigid_surface_air_field.h"
+
 namespace fluidsound::acoustics {
 
 namespace {
@@ -78,7 +80,6 @@ class AirGrid {
     return i + f[0] * (j + f[1] * static_cast<std::size_t>(k));
   }
   const std::array<int, 3>& cells() const { return n_; }
-  int layer() const { return m_; }
   bool air(std::size_t c) const { return air_[c]; }
   double volume(std::size_t c) const { return volume_[c]; }
   double open(int a, std::size_t f) const { return open_[a][f]; }
@@ -161,11 +162,7 @@ struct Recording {
   /// p_known at probe s per unit volume velocity, e^{+iωt}.
   Complex known(std::size_t s, double w, const AirProperties& air) const {
     Complex sum(0.0);
-    for (const Vec3& y : sources) {
-      const Vec3& x = probeCentre[s];
-      const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
-      sum += Complex(0.0, w * air.density) * std::polar(1.0, -w / air.soundSpeed * r) / (4.0 * kPi * r);
-    }
+    for (const Vec3& y : sources) sum += freeFieldAirPressure(probeCentre[s], y, w, air);
     return sum;
   }
 };

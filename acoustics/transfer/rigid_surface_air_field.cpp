@@ -6,15 +6,19 @@
 
 namespace fluidsound::acoustics {
 
-std::complex<double> rigidSurfaceAirPressure(const Vec3& surfacePoint, const Vec3& listener,
-                                             double angularFrequency, const AirProperties& air) {
-  const double r = std::hypot(surfacePoint[0] - listener[0], surfacePoint[1] - listener[1],
-                              surfacePoint[2] - listener[2]);
+std::complex<double> freeFieldAirPressure(const Vec3& point, const Vec3& source,
+                                          double angularFrequency, const AirProperties& air) {
+  const double r = std::hypot(point[0] - source[0], point[1] - source[1], point[2] - source[2]);
   if (r == 0.0) return 0.0;
   const double ka = angularFrequency / air.soundSpeed;
   const std::complex<double> phase = std::polar(1.0, -ka * r);
   return std::complex<double>(0.0, angularFrequency * air.density) * phase /
-         (2.0 * std::numbers::pi * r);
+         (4.0 * std::numbers::pi * r);
+}
+
+std::complex<double> rigidSurfaceAirPressure(const Vec3& surfacePoint, const Vec3& listener,
+                                             double angularFrequency, const AirProperties& air) {
+  return 2.0 * freeFieldAirPressure(surfacePoint, listener, angularFrequency, air);
 }
 
 double transferFromReciprocalPressure(std::complex<double> u, double angularFrequency,

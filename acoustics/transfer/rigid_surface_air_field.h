@@ -12,6 +12,11 @@
 
 namespace fluidsound::acoustics {
 
+/// @brief The free field of a unit volume-velocity monopole at `source`: iωρ_a e^{−ik_a R}/(4πR)
+///        [Pa per m³/s], R = |point − source|, e^{+iωt}; 0 when R = 0.
+std::complex<double> freeFieldAirPressure(const Vec3& point, const Vec3& source,
+                                          double angularFrequency, const AirProperties& air);
+
 /// @brief p_L(y) = iωρ_a e^{−ik_a R} / (2πR) [Pa per m³/s], R = |y − listener|, k_a = ω/c_a:
 ///        twice the free field of a unit-Q monopole at the listener (rigid-surface doubling).
 /// @param angularFrequency  ω [rad/s], > 0
