@@ -133,7 +133,8 @@ class AirGrid {
 struct GaussianPulse {
   double tau, t0;
   double q(double t) const { const double x = (t - t0) / tau; return std::exp(-x * x); }
-  double dq(double t) const { return -2.0 * (t - t0) / (tau * tau) * q(t); }
+  /// q̇(t) from q(t) already computed (the per-face hot path evaluates the exponential once).
+  double dq(double t, double qt) const { return -2.0 * (t - t0) / (tau * tau) * qt; }
   /// Q(ω) = ∫ q e^{−iωt} dt = τ√π e^{−(ωτ/2)²} e^{−iωt₀}.
   Complex spectrum(double w) const {
     return tau * std::sqrt(kPi) * std::exp(-std::pow(w * tau / 2.0, 2)) * std::polar(1.0, -w * t0);
@@ -149,6 +150,73 @@ struct RigidFace {
   /// Per source (the listener, then its image if any): R [m] and (x_f − x_source)_a / R.
   std::array<double, 2> distance{}, cosine{};
 };
+
+/// Every face whose rigid part borders air, with its distances and direction cosines to the
+/// known field's monopoles. @throws std::invalid_argument when a monopole is on a rigid face
+std::vector<RigidFace> rigidFaces(const AirGrid& g, const std::vector<Vec3>& sources) {
+  const std::array<int, 3> n = g.cells();
+  const double h = g.cellSize();
+  std::vector<RigidFace> rigid;
+  for (int a = 0; a < 3; ++a) {
+    std::array<int, 3> f = n;
+    ++f[a];
+    for (int k = 0; k < f[2]; ++k)
+      for (int j = 0; j < f[1]; ++j)
+        for (int i = 0; i < f[0]; ++i) {
+          const std::array<int, 3> at{i, j, k};
+          if (at[a] == 0 || at[a] == n[a]) continue;
+          std::array<int, 3> lo = at;
+          --lo[a];
+          const std::size_t face = g.face(a, i, j, k);
+          const bool airLo = g.air(g.cell(lo[0], lo[1], lo[2])), airHi = g.air(g.cell(i, j, k));
+          if (!(airLo || airHi) || g.open(a, face) >= 1.0) continue;
+          std::array<double, 3> centre{i + 0.5, j + 0.5, k + 0.5};
+          centre[a] -= 0.5;
+          const Vec3 x = g.world(centre[0], centre[1], centre[2]);
+          RigidFace rf{a, face, 1.0 - g.open(a, face)};
+          for (std::size_t s = 0; s < sources.size(); ++s) {
+            const Vec3& y = sources[s];
+            const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
+            if (!(r > 0.5 * h))
+              throw std::invalid_argument("airSidePressure: the listener is on a rigid face");
+            rf.distance[s] = r, rf.cosine[s] = (x[a] - y[a]) / r;
+          }
+          rigid.push_back(rf);
+        }
+  }
+  return rigid;
+}
+
+/// For each probe, the air cell holding it, else its nearest air face neighbour; −1 for none.
+std::vector<long> probeCells(const AirGrid& g, std::span<const Vec3> probes) {
+  const std::array<int, 3> n = g.cells();
+  const double h = g.cellSize();
+  std::vector<long> probeCell;
+  for (const Vec3& x : probes) {
+    long found = -1;
+    const long at = g.cellAt(x);
+    if (at >= 0 && g.air(static_cast<std::size_t>(at))) {
+      found = at;
+    } else if (at >= 0) {
+      double best = 2.0 * h;
+      const auto i = static_cast<int>(at % n[0]), j = static_cast<int>(at / n[0] % n[1]),
+                 k = static_cast<int>(at / (static_cast<long>(n[0]) * n[1]));
+      for (int a = 0; a < 3; ++a)
+        for (int s = -1; s <= 1; s += 2) {
+          std::array<int, 3> nb{i, j, k};
+          nb[a] += s;
+          if (nb[a] < 0 || nb[a] >= n[a]) continue;
+          const std::size_t cc = g.cell(nb[0], nb[1], nb[2]);
+          if (!g.air(cc)) continue;
+          const Vec3 centre = g.world(nb[0] + 0.5, nb[1] + 0.5, nb[2] + 0.5);
+          const double d = std::hypot(centre[0] - x[0], centre[1] - x[1], centre[2] - x[2]);
+          if (d < best) best = d, found = static_cast<long>(cc);
+        }
+    }
+    probeCell.push_back(found);
+  }
+  return probeCell;
+}
 
 /// One run of the solve: the scattered pressure at each probe's cell, every step.
 struct Recording {
@@ -198,35 +266,8 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
   std::vector<Vec3> sources{listener};  // the known field's monopoles
   if (options.groundHeight)
     sources.push_back({listener[0], 2.0 * *options.groundHeight - listener[1], listener[2]});
-  std::vector<RigidFace> rigid;
+  const std::vector<RigidFace> rigid = rigidFaces(g, sources);
   double farthest = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    std::array<int, 3> f = n;
-    ++f[a];
-    for (int k = 0; k < f[2]; ++k)
-      for (int j = 0; j < f[1]; ++j)
-        for (int i = 0; i < f[0]; ++i) {
-          const std::array<int, 3> at{i, j, k};
-          if (at[a] == 0 || at[a] == n[a]) continue;
-          std::array<int, 3> lo = at;
-          --lo[a];
-          const std::size_t face = g.face(a, i, j, k);
-          const bool airLo = g.air(g.cell(lo[0], lo[1], lo[2])), airHi = g.air(g.cell(i, j, k));
-          if (!(airLo || airHi) || g.open(a, face) >= 1.0) continue;
-          std::array<double, 3> centre{i + 0.5, j + 0.5, k + 0.5};
-          centre[a] -= 0.5;
-          const Vec3 x = g.world(centre[0], centre[1], centre[2]);
-          RigidFace rf{a, face, 1.0 - g.open(a, face)};
-          for (std::size_t s = 0; s < sources.size(); ++s) {
-            const Vec3& y = sources[s];
-            const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
-            if (!(r > 0.5 * h))
-              throw std::invalid_argument("airSidePressure: the listener is on a rigid face");
-            rf.distance[s] = r, rf.cosine[s] = (x[a] - y[a]) / r;
-          }
-          rigid.push_back(rf);
-        }
-  }
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 x = g.world(corner & 1 ? n[0] : 0, corner & 2 ? n[1] : 0, corner & 4 ? n[2] : 0);
     for (const Vec3& y : sources)
@@ -234,31 +275,7 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
   }
   const auto steps = static_cast<long>(std::ceil((pulse.t0 + 4.0 * tau + farthest / c + options.ringTime) / dt));
 
-  // Probes: the air cell holding each point, else its nearest air neighbour.
-  std::vector<long> probeCell;
-  for (const Vec3& x : probes) {
-    long found = -1;
-    const long at = g.cellAt(x);
-    if (at >= 0 && g.air(static_cast<std::size_t>(at))) {
-      found = at;
-    } else if (at >= 0) {
-      double best = 2.0 * h;
-      const auto i = static_cast<int>(at % n[0]), j = static_cast<int>(at / n[0] % n[1]),
-                 k = static_cast<int>(at / (static_cast<long>(n[0]) * n[1]));
-      for (int a = 0; a < 3; ++a)
-        for (int s = -1; s <= 1; s += 2) {
-          std::array<int, 3> nb{i, j, k};
-          nb[a] += s;
-          if (nb[a] < 0 || nb[a] >= n[a]) continue;
-          const std::size_t cc = g.cell(nb[0], nb[1], nb[2]);
-          if (!g.air(cc)) continue;
-          const Vec3 centre = g.world(nb[0] + 0.5, nb[1] + 0.5, nb[2] + 0.5);
-          const double d = std::hypot(centre[0] - x[0], centre[1] - x[1], centre[2] - x[2]);
-          if (d < best) best = d, found = static_cast<long>(cc);
-        }
-    }
-    probeCell.push_back(found);
-  }
+  const std::vector<long> probeCell = probeCells(g, probes);
 
   std::array<std::vector<double>, 3> part;  // p_x, p_y, p_z
   for (auto& pa : part) pa.assign(g.cellCount(), 0.0);
@@ -318,7 +335,8 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
       double normal = 0.0;
       for (std::size_t s = 0; s < sources.size(); ++s) {
         const double r = rf.distance[s], tr = t - r / c;
-        normal += (pulse.q(tr) / (4.0 * kPi * r * r) + pulse.dq(tr) / (4.0 * kPi * r * c)) * rf.cosine[s];
+        const double q = pulse.q(tr);
+        normal += (q / (4.0 * kPi * r * r) + pulse.dq(tr, q) / (4.0 * kPi * r * c)) * rf.cosine[s];
       }
       vInc[rf.axis][rf.face] = -rf.rigid * normal;
     }
