@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -13,16 +12,14 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/parallel_for.h>
-
 #include "acoustics/bubble/instantaneous_frequency.h"
 #include "acoustics/bubble/minnaert.h"
+#include "acoustics/transfer/air_solves.h"
 #include "acoustics/transfer/chebyshev_bands.h"
 #include "acoustics/transfer/frame_samples.h"
 #include "acoustics/transfer/rigid_surface_air_field.h"
 #include "acoustics/transfer/water_helmholtz.h"
 #include "acoustics/transfer/water_modes.h"
-#include "acoustics/transfer/wave_air_field.h"
 
 namespace fluidsound::acoustics {
 
@@ -71,10 +68,6 @@ void checkOptions(const GeometricTransferOptions& o) {
     throw TransferInputError(TransferInput::Options, "transfer.band_phase_factor",
                              "a number in (0, 10]", std::to_string(o.bandPhaseFactor));
 }
-
-/// The wave solves of the air side a frame reads, one per listener; empty: the rigid-surface
-/// field alone.
-using FrameAirFields = std::vector<const WaveAirField*>;
 
 /// p_L at every air point of the frame for one listener and frequency: the air side's wave solve
 /// where it answers (`wave`, may be null), else the rigid-surface field.
@@ -376,50 +369,6 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
-
-/// The air side's wave solves of a run: one per listener every `interval` seconds at the frames
-/// that have samples, each from the frame nearest its time; a frame reads the solve nearest it.
-/// All are solved up front, in parallel, so the values do not depend on the thread count.
-class AirSolves {
- public:
-  AirSolves() = default;
-  AirSolves(const std::vector<std::pair<int, FrameSamples>>& work, const FrameWaterGrids& grids,
-            const TransferSetup& setup, const WaveAirOptions& options)
-      : fps_(setup.fps), interval_(options.interval) {
-    std::vector<int> indices;
-    for (const auto& [frame, samples] : work) indices.push_back(indexOf(frame));
-    std::sort(indices.begin(), indices.end());
-    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-    const std::size_t listeners = setup.listeners.size();
-    std::vector<std::unique_ptr<WaveAirField>> fields(indices.size() * listeners);
-    tbb::parallel_for(std::size_t{0}, fields.size(), [&](std::size_t n) {
-      const int index = indices[n / listeners];
-      const int frame = std::clamp(static_cast<int>(std::lround(index * interval_ * fps_)), 0, setup.lastFrame);
-      fields[n] = std::make_unique<WaveAirField>(grids.open(frame), setup.listeners[n % listeners].position,
-                                                 setup.air, options);
-    });
-    for (std::size_t i = 0; i < indices.size(); ++i) {
-      FrameAirFields& entry = byIndex_[indices[i]];
-      for (std::size_t l = 0; l < listeners; ++l) entry.push_back(fields[i * listeners + l].get());
-    }
-    fields_ = std::move(fields);
-  }
-  /// The fields frame `frame` reads (empty without the wave air side).
-  const FrameAirFields& forFrame(int frame) const {
-    static const FrameAirFields none;
-    const auto found = byIndex_.find(indexOf(frame));
-    return found == byIndex_.end() ? none : found->second;
-  }
-  std::size_t count() const { return fields_.size(); }
-
- private:
-  int indexOf(int frame) const {
-    return interval_ > 0.0 ? static_cast<int>(std::lround(frame / fps_ / interval_)) : 0;
-  }
-  double fps_ = 30.0, interval_ = 0.0;
-  std::vector<std::unique_ptr<WaveAirField>> fields_;
-  std::map<int, FrameAirFields> byIndex_;
-};
 
 void addStats(GeometricTransferStats& total, const GeometricTransferStats& frame) {
   total.reciprocalFrames += frame.reciprocalFrames;
