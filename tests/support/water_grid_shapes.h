@@ -9,11 +9,22 @@
 
 #include <array>
 #include <functional>
+#include <utility>
 
 #include "acoustics/transfer/water_grid.h"
 #include "sim/core/vec3.h"
 
 namespace fluidsound::test {
+
+/// Frames that are all the same grid (a still body of water in the transfer stage's tests).
+class SameGridEveryFrame : public acoustics::FrameWaterGrids {
+ public:
+  explicit SameGridEveryFrame(acoustics::WaterGrid grid) : grid_(std::move(grid)) {}
+  acoustics::WaterGrid open(int) const override { return grid_; }
+
+ private:
+  acoustics::WaterGrid grid_;
+};
 
 /// An analytic solid: a signed distance [m] (or any function with its sign), < 0 inside.
 using SolidDistance = std::function<double(const Vec3&)>;

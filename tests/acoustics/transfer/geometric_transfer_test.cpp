@@ -20,24 +20,9 @@
 namespace fluidsound::acoustics {
 namespace {
 
-/// Every frame is the same 10 × 7 × 2 cm box of water at 5 mm cells, surface at y = 7 cm.
-class BoxFrames : public FrameWaterGrids {
- public:
-  explicit BoxFrames(WaterGrid grid) : grid_(std::move(grid)) {}
-  WaterGrid open(int) const override { return grid_; }
-
- private:
-  WaterGrid grid_;
-};
-
+/// The frames of these tests: every one the same 10 × 7 × 2 cm box of water at 5 mm cells,
+/// surface at y = 7 cm.
 WaterGrid box() { return test::waterBox({0.1, 0.07, 0.02, 0.005, 2}); }
-
-class QuietObserver : public StageObserver {
- public:
-  void started(double) override {}
-  void progress(double) override {}
-  bool wasInterrupted() override { return false; }
-};
 
 TransferSetup setupWithTwoListeners() {
   TransferSetup setup;
@@ -64,8 +49,8 @@ BubbleTrackSet bubblesOfRadii(const std::vector<double>& radii) {
 }
 
 TransferResult run(const BubbleTrackSet& tracks, const GeometricTransferOptions& options = {}) {
-  QuietObserver observer;
-  return computeGeometricTransfer(tracks, BoxFrames(box()), setupWithTwoListeners(), options,
+  StageObserver observer;  // no progress, never stops
+  return computeGeometricTransfer(tracks, test::SameGridEveryFrame(box()), setupWithTwoListeners(), options,
                                   observer);
 }
 
@@ -261,9 +246,9 @@ TEST(GeometricTransfer, AFailingSolveIsAnErrorNamingTheFrame) {
   broken.faceOpen[1][broken.faceIndex(1, 5, 10, 1)] = std::numeric_limits<float>::quiet_NaN();
   BubbleTrackSet tracks = bubblesOfRadii({1e-3});
   tracks.bubbles[0].track[0].time = 4.0 / 30.0;
-  QuietObserver observer;
+  StageObserver observer;  // no progress, never stops
   try {
-    computeGeometricTransfer(tracks, BoxFrames(broken), setupWithTwoListeners(), {}, observer);
+    computeGeometricTransfer(tracks, test::SameGridEveryFrame(broken), setupWithTwoListeners(), {}, observer);
     ADD_FAILURE() << "no error";
   } catch (const TransferSolveError& e) {
     EXPECT_EQ(e.frame(), 4);
@@ -275,9 +260,9 @@ TEST(GeometricTransfer, AListenerInTheLiquidIsAnInputError) {
   BubbleTrackSet tracks = bubblesOfRadii({1e-3});
   TransferSetup setup = setupWithTwoListeners();
   setup.listeners[1].position = {0.05, 0.03, 0.01};
-  QuietObserver observer;
+  StageObserver observer;  // no progress, never stops
   try {
-    computeGeometricTransfer(tracks, BoxFrames(box()), setup, {}, observer);
+    computeGeometricTransfer(tracks, test::SameGridEveryFrame(box()), setup, {}, observer);
     ADD_FAILURE() << "no error";
   } catch (const TransferInputError& e) {
     EXPECT_EQ(e.field(), "listeners[1].position");

@@ -90,22 +90,6 @@ TEST(WaveAirField, AGlassOfAirReadThroughTheFieldResonatesAtItsQuarterWave) {
   EXPECT_FALSE(field.at({0.0025, 0.1, 0.0025}, 2.0 * kPi * expected));  // far above the liquid
 }
 
-class OneFrame : public FrameWaterGrids {
- public:
-  explicit OneFrame(WaterGrid grid) : grid_(std::move(grid)) {}
-  WaterGrid open(int) const override { return grid_; }
-
- private:
-  WaterGrid grid_;
-};
-
-class QuietObserver : public StageObserver {
- public:
-  void started(double) override {}
-  void progress(double) override {}
-  bool wasInterrupted() override { return false; }
-};
-
 // Reference: the rigid-surface air side, the free field doubled by the surface (shared
 // transfer.md §1), which is exact over an open flat surface with nothing in the way; the wave air
 // side must reproduce it end to end there within 3 % (the tolerance), so the geometric
@@ -127,18 +111,18 @@ TEST(WaveAirField, OverAnOpenFlatSurfaceTheStageHearsTheRigidSurfacesDoubling) {
     bubble.track.push_back(s);
     tracks.bubbles.push_back(bubble);
   }
-  QuietObserver observer;
-  const TransferResult rigid = computeGeometricTransfer(tracks, OneFrame(box), setup, {}, observer);
+  StageObserver observer;  // no progress, never stops
+  const TransferResult rigid = computeGeometricTransfer(tracks, test::SameGridEveryFrame(box), setup, {}, observer);
   GeometricTransferOptions wave;
   wave.waveAir = WaveAirOptions{};
   TransferResult one, two;
   {
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
-    one = computeGeometricTransfer(tracks, OneFrame(box), setup, wave, observer);
+    one = computeGeometricTransfer(tracks, test::SameGridEveryFrame(box), setup, wave, observer);
   }
   {
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
-    two = computeGeometricTransfer(tracks, OneFrame(box), setup, wave, observer);
+    two = computeGeometricTransfer(tracks, test::SameGridEveryFrame(box), setup, wave, observer);
   }
   EXPECT_EQ(one.tracks, two.tracks);
   EXPECT_EQ(one.geometric.airSolves, 2u);
