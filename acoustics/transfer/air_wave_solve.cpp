@@ -27,6 +27,7 @@ class AirGrid {
  public:
   AirGrid(const WaterGrid& grid, int layer) : grid_(grid), m_(layer) {
     for (int a = 0; a < 3; ++a) n_[a] = grid.cells[a] + 2 * layer;
+    extended_.cells = n_;
     air_.resize(cellCount());
     volume_.resize(cellCount());
     for (int k = 0; k < n_[2]; ++k)
@@ -70,15 +71,10 @@ class AirGrid {
         }
   }
 
-  std::size_t cellCount() const { return static_cast<std::size_t>(n_[0]) * n_[1] * n_[2]; }
-  std::size_t cell(int i, int j, int k) const {
-    return static_cast<std::size_t>(i) + static_cast<std::size_t>(n_[0]) * (j + static_cast<std::size_t>(n_[1]) * k);
-  }
-  std::size_t face(int a, int i, int j, int k) const {
-    std::array<std::size_t, 3> f{std::size_t(n_[0]), std::size_t(n_[1]), std::size_t(n_[2])};
-    ++f[a];
-    return i + f[0] * (j + f[1] * static_cast<std::size_t>(k));
-  }
+  // Cells and faces are indexed as a WaterGrid of the extended counts indexes them.
+  std::size_t cellCount() const { return extended_.cellCount(); }
+  std::size_t cell(int i, int j, int k) const { return extended_.cellIndex(i, j, k); }
+  std::size_t face(int a, int i, int j, int k) const { return extended_.faceIndex(a, i, j, k); }
   const std::array<int, 3>& cells() const { return n_; }
   bool air(std::size_t c) const { return air_[c]; }
   double volume(std::size_t c) const { return volume_[c]; }
@@ -124,6 +120,7 @@ class AirGrid {
   const WaterGrid& grid_;
   int m_;
   std::array<int, 3> n_{};
+  WaterGrid extended_;  ///< only its cell counts: the extended grid's indexing
   std::vector<char> air_;
   std::vector<double> volume_;
   std::array<std::vector<double>, 3> open_;
