@@ -3,6 +3,7 @@
 // acoustics::BubbleTrackSet; written back as text directly.
 #include "io/bubble_track_file.h"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -59,7 +60,8 @@ class TrackSetReader {
   BubbleTrackSet read(const json& root) {
     check_.requireFormat(root, kFormatTag);
     check_.rejectUnknownKeys(root, "",
-                             {"format", "sample_rate", "duration", "listeners", "bubbles"});
+                             {"format", "sample_rate", "duration", "listeners", "heads", "hrtf",
+                              "bubbles"});
 
     BubbleTrackSet set;
     if (const json* rate = findMember(root, "sample_rate")) {
@@ -79,6 +81,11 @@ class TrackSetReader {
             check_.text((*listeners)[i], elementPath("listeners", i), "a string (listener name)"));
       }
     }
+    if (const json* heads = check_.optionalArray(root, "", "heads", "an array of heads"))
+      for (std::size_t i = 0; i < heads->size(); ++i)
+        set.heads.push_back(head((*heads)[i], elementPath("heads", i), set));
+    if (const json* hrtf = findMember(root, "hrtf"))
+      set.hrtf = check_.nonEmptyText(*hrtf, "hrtf", "the path of a SOFA file (string)");
     channelCount_ = set.channelCount();
     transferExpected_ = "an array of " + std::to_string(channelCount_) +
                         (channelCount_ == 1 ? " number" : " numbers") + " (one per listener" +
@@ -86,8 +93,10 @@ class TrackSetReader {
 
     const json& bubbles = check_.requiredArray(root, "", "bubbles", "an array of bubbles");
     set.bubbles.reserve(bubbles.size());
-    for (std::size_t i = 0; i < bubbles.size(); ++i)
+    for (std::size_t i = 0; i < bubbles.size(); ++i) {
       set.bubbles.push_back(bubble(bubbles[i], elementPath("bubbles", i)));
+      if (!set.heads.empty()) requireDirection(set.bubbles.back(), elementPath("bubbles", i), set);
+    }
     // With TransferValues::Optional, `transfer` is all or nothing: a file written before the
     // transfer stage has none.
     if (!firstWithTransfer_.empty() && !firstWithoutTransfer_.empty()) {
@@ -98,6 +107,38 @@ class TrackSetReader {
   }
 
  private:
+  /// A listener that is a head: a listener's name (once), its centre and its orientation.
+  acoustics::ListenerHead head(const json& object, const std::string& path, const BubbleTrackSet& set) {
+    check_.requireObject(object, path, "an object with listener, position, facing and up");
+    check_.rejectUnknownKeys(object, path, {"listener", "position", "facing", "up"});
+    acoustics::ListenerHead head;
+    const std::string namePath = memberPath(path, "listener");
+    const std::string nameExpected = "the name of a listener in listeners, not used by another head";
+    const json* name = findMember(object, "listener");
+    if (name == nullptr) check_.fail(namePath, nameExpected, std::string(kMissing));
+    head.listener = check_.text(*name, namePath, nameExpected);
+    if (std::find(set.listeners.begin(), set.listeners.end(), head.listener) == set.listeners.end() ||
+        set.head(head.listener) != nullptr)
+      check_.fail(namePath, nameExpected, describe(*name));
+    head.position = check_.requiredVector(object, path, "position", "metres");
+    head.facing = check_.requiredVector(object, path, "facing", "direction");
+    head.up = check_.requiredVector(object, path, "up", "direction");
+    if (!acoustics::isHeadOrientation(head.facing, head.up))
+      check_.fail(memberPath(path, "up"), "a direction not parallel to facing, both non-zero",
+                  describe(object["up"]));
+    return head;
+  }
+
+  /// With heads, every bubble needs a direction: a track sample with a position.
+  void requireDirection(const BubbleTrack& bubble, const std::string& path, const BubbleTrackSet& set) {
+    for (const TrackSample& s : bubble.track)
+      if (s.position) return;
+    check_.fail(memberPath(path, "track"),
+                "a track sample with a position (listener \"" + set.heads.front().listener +
+                    "\" is a head, which hears each bubble from its direction)",
+                bubble.track.empty() ? "no track" : "no position");
+  }
+
   BubbleTrack bubble(const json& object, const std::string& path) {
     check_.requireObject(object, path, "an object with radius and birth");
     check_.rejectUnknownKeys(object, path, {"radius", "birth", "amplitude", "track"});
@@ -212,6 +253,13 @@ std::string formatTrackSet(const BubbleTrackSet& set) {
     out += ",\n";
   }
   if (!set.listeners.empty()) out += "  \"listeners\": " + json(set.listeners).dump() + ",\n";
+  if (!set.heads.empty()) {
+    json heads = json::array();
+    for (const acoustics::ListenerHead& h : set.heads)
+      heads.push_back({{"listener", h.listener}, {"position", h.position}, {"facing", h.facing}, {"up", h.up}});
+    out += "  \"heads\": " + heads.dump() + ",\n";
+  }
+  if (set.hrtf) out += "  \"hrtf\": " + json(*set.hrtf).dump() + ",\n";
   out += "  \"bubbles\": [";
   for (std::size_t i = 0; i < set.bubbles.size(); ++i) {
     const BubbleTrack& bubble = set.bubbles[i];

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "acoustics/bubble/bubble_track.h"
+#include "io/hrir_file.h"
+#include "io/input_error.h"
 #include "io/json_validation.h"
 #include "io/render_limits.h"
 #include "io/scene_bubbles.h"
@@ -149,16 +151,18 @@ class SceneReader {
       for (std::size_t i = 0; i < items->size(); ++i)
         scene.solids.push_back(readSolid(check_, (*items)[i], elementPath("solids", i), folder_));
     }
-    scene.listeners = listeners(root, scene.domain);
+    scene.listeners = listeners(root, scene.domain, scene.gravity);
     if (const json* audio =
             check_.optionalObject(root, "", "audio", "an object with sample_rate (Hz)")) {
-      check_.rejectUnknownKeys(*audio, "audio", {"sample_rate"});
+      check_.rejectUnknownKeys(*audio, "audio", {"sample_rate", "hrtf"});
       if (const json* rate = findMember(*audio, "sample_rate")) {
         scene.sampleRate = static_cast<double>(
             check_.wholeNumber(*rate, "audio.sample_rate", "an integer from 8000 to 768000 (Hz)",
                                kMinSampleRate, kMaxSampleRate));
       }
+      if (const json* hrtf = findMember(*audio, "hrtf")) scene.hrtf = hrtfFile(*hrtf);
     }
+    requireDefaultHrtf(scene);
     if (const json* solver =
             check_.optionalObject(root, "", "solver", "an object of solver settings"))
       scene.solver = solverSettings(*solver);
@@ -240,12 +244,14 @@ class SceneReader {
   /// The audio of the whole scene (duration × audio.sample_rate × listeners) within
   /// io::kMaxRenderSamples, named at time.duration (the machine's memory is checked by `run`).
   void requireRenderableLength(const sim::Scene& scene) const {
-    const double samples = renderSamples(scene.time.duration, scene.sampleRate, scene.listeners.size());
+    std::size_t channels = 0;  // one per listener, two per head
+    for (const sim::Listener& l : scene.listeners) channels += l.head ? 2 : 1;
+    const double samples = renderSamples(scene.time.duration, scene.sampleRate, channels);
     if (samples <= kMaxRenderSamples) return;
     check_.fail("time.duration",
-                "a duration whose audio (duration × audio.sample_rate × listeners) is at most 2^31 samples",
+                "a duration whose audio (duration × audio.sample_rate × channels) is at most 2^31 samples",
                 roundedNumber(scene.time.duration, 6) + " s × " + roundedNumber(scene.sampleRate, 6) + " Hz × " +
-                    std::to_string(scene.listeners.size()) + " = " + roundedNumber(samples, 4) + " samples");
+                    std::to_string(channels) + " = " + roundedNumber(samples, 4) + " samples");
   }
 
   /// The substeps a frame can need, from the fastest speed the scene can produce: its fastest
@@ -285,11 +291,64 @@ class SceneReader {
 
   // ---- listeners, solver ----------------------------------------------------------------------
 
-  std::vector<sim::Listener> listeners(const json& root, const sim::Domain& domain) const {
+  /// A listener's "head": facing (required) and up (default: against gravity, else +y).
+  sim::HeadOrientation headOrientation(const json& object, const std::string& path,
+                                       const Vec3& gravity) const {
+    check_.rejectUnknownKeys(object, path, {"facing", "up"});
+    sim::HeadOrientation head;
+    head.facing = check_.requiredVector(object, path, "facing", "direction the nose points");
+    if (!(head.facing != Vec3{0.0, 0.0, 0.0}))
+      check_.fail(memberPath(path, "facing"), "a non-zero direction", "[0, 0, 0]");
+    const bool falling = gravity != Vec3{0.0, 0.0, 0.0};
+    head.up = falling ? Vec3{-gravity[0], -gravity[1], -gravity[2]} : Vec3{0.0, 1.0, 0.0};
+    if (findMember(object, "up") != nullptr)
+      head.up = check_.requiredVector(object, path, "up", "direction of the top of the head");
+    if (!acoustics::isHeadOrientation(head.facing, head.up)) {
+      const bool given = findMember(object, "up") != nullptr;
+      check_.fail(memberPath(path, given ? "up" : "facing"),
+                  given ? "a non-zero direction not parallel to facing"
+                        : "a direction not parallel to up, which defaults to against gravity (give head.up)",
+                  given ? describe(object["up"]) : describe(object["facing"]));
+    }
+    return head;
+  }
+
+  /// "audio.hrtf": a SOFA file of head-related impulse responses that libmysofa reads, resolved
+  /// against the scene file's folder; read once here so that a bad one stops the run before it starts.
+  fs::path hrtfFile(const json& value) const {
+    const std::string expected =
+        "the path of a SOFA file of head-related impulse responses (relative to the scene file's folder)";
+    const fs::path resolved = (folder_ / fs::path(check_.nonEmptyText(value, "audio.hrtf", expected))).lexically_normal();
+    try {
+      (void)readHrirTable(resolved);
+    } catch (const InputError& error) {
+      check_.fail("audio.hrtf", expected, describe(value) + " (" + error.what() + ")");
+    }
+    return resolved;
+  }
+
+  /// Heads without "audio.hrtf" hear through the default set, which must then be installed.
+  void requireDefaultHrtf(const sim::Scene& scene) const {
+    if (scene.hrtf) return;
+    for (std::size_t i = 0; i < scene.listeners.size(); ++i) {
+      if (!scene.listeners[i].head) continue;
+      try {
+        (void)readHrirTable(defaultHrirFile());
+      } catch (const InputError& error) {
+        check_.fail(memberPath(elementPath("listeners", i), "head"),
+                    "a head with an HRTF set: give audio.hrtf, or install Debian's libmysofa1 (MIT KEMAR)",
+                    error.what());
+      }
+      return;
+    }
+  }
+
+  std::vector<sim::Listener> listeners(const json& root, const sim::Domain& domain,
+                                       const Vec3& gravity) const {
     const std::string expected = "an array of 1 or more listeners {name, position}";
     const json* items = check_.optionalArray(root, "", "listeners", expected);
     if (items == nullptr) {  // DESIGN.md: one listener 0.5 m above the domain centre
-      sim::Listener listener{"listener", {}};
+      sim::Listener listener{"listener", {}, std::nullopt};
       for (std::size_t a = 0; a < 3; ++a)
         listener.position[a] = 0.5 * (domain.min[a] + domain.max[a]);
       listener.position[1] += kDefaultListenerHeight;
@@ -307,7 +366,7 @@ class SceneReader {
       const json& item = (*items)[i];
       const std::string path = elementPath("listeners", i);
       check_.requireObject(item, path, "an object with name and position");
-      check_.rejectUnknownKeys(item, path, {"name", "position"});
+      check_.rejectUnknownKeys(item, path, {"name", "position", "head"});
       sim::Listener listener;
       const std::string namePath = memberPath(path, "name");
       const std::string nameExpected = "a non-empty string (the channel's name)";
@@ -323,6 +382,8 @@ class SceneReader {
         }
       }
       listener.position = check_.requiredVector(item, path, "position", "metres");
+      if (const json* head = check_.optionalObject(item, path, "head", "an object with facing and up"))
+        listener.head = headOrientation(*head, memberPath(path, "head"), gravity);
       out.push_back(std::move(listener));
     }
     return out;

@@ -14,10 +14,18 @@
 
 namespace fluidsound::sim {
 
-/// A listener: one output channel.
+/// How a head is turned (docs/binaural.md): where its nose points and where its top is.
+struct HeadOrientation {
+  Vec3 facing{};  ///< any length > 0
+  Vec3 up{};      ///< any length > 0, not parallel to facing
+  bool operator==(const HeadOrientation&) const = default;
+};
+
+/// A listener: one output channel, or two (left and right ear) when it is a head.
 struct Listener {
   std::string name;
-  Vec3 position{};  ///< [m]
+  Vec3 position{};  ///< [m]; a head's centre
+  std::optional<HeadOrientation> head;  ///< a binaural head, heard through the scene's HRTF set
   bool operator==(const Listener&) const = default;
 };
 
@@ -53,6 +61,7 @@ struct Scene : FluidScene {
   std::filesystem::path file;       ///< the scene file (for messages); paths inside are resolved
   std::vector<Listener> listeners;  ///< default: one listener 0.5 m above the domain centre
   double sampleRate = 48000.0;      ///< [Hz], the "audio" block
+  std::optional<std::filesystem::path> hrtf;  ///< the heads' SOFA file ("audio.hrtf"); default MIT KEMAR
   BubbleSettings bubbles;           ///< the "bubbles" block (docs/bubbles.md); defaults if absent
   TransferSettings transfer;        ///< the "transfer" block; defaults if absent
   bool operator==(const Scene&) const = default;

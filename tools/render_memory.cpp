@@ -71,7 +71,7 @@ void requireMemoryForRender(const acoustics::BubbleTrackSet& tracks, const std::
                             const acoustics::SynthesisSettings& settings,
                             const std::optional<double>& durationOption,
                             std::uint64_t availableBytes) {
-  const std::size_t channels = tracks.channelCount();
+  const std::size_t channels = acoustics::outputChannelListeners(tracks).size();
   std::size_t last = 0;
   const double seconds =
       settings.duration ? *settings.duration : defaultDuration(tracks, settings, last);
@@ -89,13 +89,14 @@ void requireMemoryForRender(const acoustics::BubbleTrackSet& tracks, const std::
 
 void requireMemoryForRender(const sim::Scene& scene, const std::string& sceneFile,
                             std::uint64_t availableBytes) {
-  const std::size_t channels = scene.listeners.size();
+  std::size_t channels = 0;  // two per head
+  for (const sim::Listener& l : scene.listeners) channels += l.head ? 2 : 1;
   if (io::renderSamples(scene.time.duration, scene.sampleRate, channels) <=
       sampleLimit(availableBytes))
     return;
   throw io::InputError(sceneFile, "time.duration", expectedText(availableBytes),
                        foundText(scene.time.duration, scene.sampleRate, channels) +
-                           " (audio.sample_rate, one channel per listener)");
+                           " (audio.sample_rate, one channel per listener, two per head)");
 }
 
 }  // namespace fluidsound::tools

@@ -77,12 +77,16 @@ Json spectrumSummary(const acoustics::BubbleTrackSet& tracks,
                                       std::min(kCentroidHighHz, audio.sampleRate / 2.0)};
   const std::vector<acoustics::PredictedSpectrum> predicted =
       acoustics::predictedSpectra(tracks, settings, band);
+  // A head's two ears are predicted as its centre: the prediction knows no head.
+  const std::vector<std::size_t> listenerOf = acoustics::outputChannelListeners(tracks);
+  const std::vector<std::string> names = acoustics::outputChannelNames(tracks);
   Json channels = Json::array();
-  for (std::size_t l = 0; l < audio.channels.size(); ++l) {
+  for (std::size_t c = 0; c < audio.channels.size(); ++c) {
+    const std::size_t l = c < listenerOf.size() ? listenerOf[c] : predicted.size();
     const bool heard = l < predicted.size() && predicted[l].bandEnergy > 0.0;
-    Json channel = {{"channel", l}};
-    if (l < tracks.listeners.size()) channel["listener"] = tracks.listeners[l];
-    channel["centroid_measured_hz"] = measuredCentroid(audio, l, band);
+    Json channel = {{"channel", c}};
+    if (c < names.size()) channel["listener"] = names[c];
+    channel["centroid_measured_hz"] = measuredCentroid(audio, c, band);
     channel["centroid_predicted_hz"] = heard ? Json(predicted[l].centroid) : Json(nullptr);
     channels.push_back(channel);
   }

@@ -44,9 +44,11 @@ void note(const SynthOptions& o, const std::string& text) {
 /// acoustics::synthesize with the terminal's progress line; a signal stops it (io::Interrupted).
 acoustics::SynthesisStageResult renderWithProgress(const acoustics::BubbleTrackSet& tracks,
                                                    const SynthOptions& o) {
-  const acoustics::SynthesisOptions options{o.audio.sampleRate, o.duration, o.model, std::nullopt};
-  requireMemoryForRender(tracks, o.input, acoustics::synthesisSettings(tracks, options), o.duration,
-                         physicalMemoryBytes());
+  acoustics::SynthesisOptions options{o.audio.sampleRate, o.duration, o.model, std::nullopt};
+  const acoustics::SynthesisSettings settings = acoustics::synthesisSettings(tracks, options);
+  requireMemoryForRender(tracks, o.input, settings, o.duration, physicalMemoryBytes());
+  std::optional<acoustics::HrirTable> heads;
+  if (!tracks.heads.empty()) options.headResponses = &heads.emplace(readHeadResponses(tracks, o.input, settings.sampleRate));
   StageProgress observer("synth", "s audio", o.common.quiet);
   try {
     acoustics::SynthesisStageResult result = acoustics::synthesize(tracks, options, observer);
@@ -78,7 +80,7 @@ nlohmann::ordered_json renderSynth(const SynthOptions& o, const acoustics::Bubbl
 
   const std::size_t channels = result.channels.size();
   const io::AudioBuffer audio{result.settings.sampleRate, std::move(result.channels)};
-  const io::AudioWriteSettings write = audioWriteSettings(o.audio, o.output, tracks->listeners);
+  const io::AudioWriteSettings write = audioWriteSettings(o.audio, o.output, acoustics::outputChannelNames(*tracks));
   io::OutputBatch outputs;
   const io::AudioWriteReport w = addSynthFiles(outputs, o, audio, write);
   RunReport report("synth");

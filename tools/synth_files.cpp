@@ -7,6 +7,7 @@
 
 #include "acoustics/synthesis/oscillator_bank.h"
 #include "io/bubble_track_file.h"
+#include "io/hrir_file.h"
 #include "io/input_error.h"
 #include "io/spectrogram_image.h"
 #include "io/text_file.h"
@@ -39,6 +40,23 @@ acoustics::BubbleTrackSet readSynthInput(const SynthOptions& o) {
                          "at most " + std::to_string(acoustics::kMaxListeners) + " listeners",
                          std::to_string(tracks.listeners.size()));
   return tracks;
+}
+
+acoustics::HrirTable readHeadResponses(const acoustics::BubbleTrackSet& tracks, const std::string& input,
+                                       double sampleRate) {
+  std::filesystem::path sofa = io::defaultHrirFile();
+  if (tracks.hrtf) {
+    sofa = *tracks.hrtf;
+    if (sofa.is_relative() && input != io::kStandardInput) sofa = std::filesystem::path(input).parent_path() / sofa;
+  }
+  try {
+    return io::readHrirTable(sofa, sampleRate);
+  } catch (const io::InputError& error) {
+    throw io::InputError(input, "hrtf",
+                         tracks.hrtf ? "a SOFA file of head-related impulse responses (relative to this file's folder)"
+                                     : "the default HRTF set (Debian's libmysofa1, MIT KEMAR) for the heads",
+                         error.what());
+  }
 }
 
 std::string checkedSynthOutputs(const SynthOptions& o) {

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "acoustics/binaural/hrir_table.h"
 #include "io/audio_file.h"
 #include "io/output_file.h"
 #include "tools/synth_command.h"
@@ -14,6 +15,12 @@ namespace fluidsound::tools {
 /// @brief Reads options.input, with a note first when it takes about a second to read.
 /// @throws io::InputError for a bad file or more than acoustics::kMaxListeners listeners
 acoustics::BubbleTrackSet readSynthInput(const SynthOptions& options);
+
+/// @brief The heads' impulse responses at `sampleRate` [Hz]: the tracks' `hrtf` file (relative
+///        to `input`'s folder), else the default MIT KEMAR set.
+/// @throws io::InputError naming `input`, its field `hrtf` and the SOFA file's own problem
+acoustics::HrirTable readHeadResponses(const acoustics::BubbleTrackSet& tracks, const std::string& input,
+                                       double sampleRate);
 
 /// @brief Refuses, before the render, every output that cannot be written or names an input or
 ///        another output, and an audio name, --format and --bits that disagree (audioLayout()).

@@ -57,15 +57,28 @@ double interauralTimeDifference(const HrirTable& table, std::size_t index) {
   return (bestLag + offset) / table.sampleRate + (table.delayRight.at(index) - table.delayLeft.at(index));
 }
 
+double responseMagnitude(const std::vector<float>& response, double frequency, double sampleRate) {
+  std::complex<double> sum(0.0);
+  for (std::size_t n = 0; n < response.size(); ++n)
+    sum += static_cast<double>(response[n]) *
+           std::polar(1.0, -2.0 * std::numbers::pi * frequency * static_cast<double>(n) / sampleRate);
+  return std::abs(sum);
+}
+
 double interauralLevelDifference(const HrirTable& table, std::size_t index, double frequency) {
-  const auto magnitude = [&](const std::vector<float>& h) {
-    std::complex<double> sum(0.0);
-    for (std::size_t n = 0; n < h.size(); ++n)
-      sum += static_cast<double>(h[n]) *
-             std::polar(1.0, -2.0 * std::numbers::pi * frequency * static_cast<double>(n) / table.sampleRate);
-    return std::abs(sum);
-  };
-  return 20.0 * std::log10(magnitude(table.left.at(index)) / magnitude(table.right.at(index)));
+  return 20.0 * std::log10(responseMagnitude(table.left.at(index), frequency, table.sampleRate) /
+                           responseMagnitude(table.right.at(index), frequency, table.sampleRate));
+}
+
+double freeFieldGain(const HrirTable& table) {
+  const std::size_t ahead = nearestDirection(table, {1.0, 0.0, 0.0});
+  double sum = 0.0;
+  int count = 0;
+  for (double f = 200.0; f <= 500.0; f += 50.0, count += 2)
+    sum += responseMagnitude(table.left[ahead], f, table.sampleRate) +
+           responseMagnitude(table.right[ahead], f, table.sampleRate);
+  if (!(sum > 0.0)) throw std::invalid_argument("freeFieldGain: the frontal responses are silent below 500 Hz");
+  return count / sum;
 }
 
 Vec3 headDirection(const Vec3& world, const Vec3& facing, const Vec3& up) {

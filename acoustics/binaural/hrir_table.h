@@ -33,6 +33,17 @@ double interauralTimeDifference(const HrirTable& table, std::size_t index);
 ///        20 log₁₀ |H_left(f)| / |H_right(f)|, each the response's Fourier sum at f.
 double interauralLevelDifference(const HrirTable& table, std::size_t index, double frequency);
 
+/// |H(f)|: the magnitude of `response`'s Fourier sum at `frequency` [Hz].
+double responseMagnitude(const std::vector<float>& response, double frequency, double sampleRate);
+
+/// @brief The gain that makes the set's responses pressure at the ear ÷ free-field pressure at the
+///        head's centre: 1 / the mean of both ears' |H(f)| for the direction nearest straight ahead
+///        over f = 200, 250, …, 500 Hz, where a head changes the sound by about 1 dB or less
+///        (Shaw 1974; Kuhn 1977). A measured set also holds its loudspeaker's and microphones'
+///        gains, which this removes.
+/// @throws std::invalid_argument if those responses are silent
+double freeFieldGain(const HrirTable& table);
+
 /// @brief `world` in the frame of a head facing `facing` with `up` (need not be unit or exactly
 ///        perpendicular: up is made perpendicular to facing): (·facing, ·left, ·up), left = up × facing.
 /// @throws std::invalid_argument when facing or up is zero or they are parallel

@@ -285,7 +285,7 @@ TEST(BubbleTrackFile, UnknownCamelCaseKeySuggestsTheSnakeCaseKey) {
   document["sampleRate"] = 44100;
   expectError(
       parseError(document.dump()), "sampleRate",
-      "one of format, sample_rate, duration, listeners, bubbles (did you mean 'sample_rate'?)");
+      "one of format, sample_rate, duration, listeners, heads, hrtf, bubbles (did you mean 'sample_rate'?)");
 }
 
 TEST(BubbleTrackFile, UnknownKeyWithoutNearMatchPointsToExtensionKeys) {

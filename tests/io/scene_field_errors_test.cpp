@@ -128,7 +128,7 @@ const std::vector<FieldCase> kFieldCases = {
      "over the domain) / "
      "(2.5 × 0.005 m × 0.001 fps)"},
     {"time_duration_audio_too_long", "/time", R"({"duration": 30000, "fps": 30})", "time.duration",
-     "a duration whose audio (duration × audio.sample_rate × listeners) is at most 2^31 samples",
+     "a duration whose audio (duration × audio.sample_rate × channels) is at most 2^31 samples",
      "30000 s × 44100 Hz × 2 = 2.646e+09 samples"},
     {"time_unknown_key", "/time/frame_rate", "30", "time.frame_rate", "one of duration, fps, cfl",
      "an unknown key"},
@@ -327,7 +327,7 @@ const std::vector<FieldCase> kFieldCases = {
      "listeners[0].position", vector3("metres"), "an array of 2 values"},
     {"listener_position_component_string", "/listeners/0/position/2", R"("0.3")",
      "listeners[0].position[2]", "a number (metres)", R"("0.3")"},
-    {"listener_unknown_key", "/listeners/0/gain", "1", "listeners[0].gain", "one of name, position",
+    {"listener_unknown_key", "/listeners/0/gain", "1", "listeners[0].gain", "one of name, position, head",
      "an unknown key"},
 
     // ---- audio ----------------------------------------------------------------------------------
@@ -341,7 +341,7 @@ const std::vector<FieldCase> kFieldCases = {
     {"audio_sample_rate_just_above", "/audio/sample_rate", "768001", "audio.sample_rate",
      "an integer from 8000 to 768000 (Hz)", "768001"},
     {"audio_unknown_key", "/audio/sampleRate", "48000", "audio.sampleRate",
-     "one of sample_rate (did you mean 'sample_rate'?)", "an unknown key"},
+     "one of sample_rate, hrtf (did you mean 'sample_rate'?)", "an unknown key"},
 
     // ---- solver ---------------------------------------------------------------------------------
     {"solver_string", "/solver", R"("apic")", "solver", "an object of solver settings",

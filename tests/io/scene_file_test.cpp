@@ -50,7 +50,7 @@ TEST(SceneFile, EveryFieldReachesItsRecord) {
        {0, 0, 0},
        {{0.0, {0, 0, 0}}, {0.5, {0, -0.15, 0}}}},
       {sim::MeshFile{folder.path() / "glass.ply"}, 1.0, {0, 0, 0}, {0.3, 0, 0.05}, {}}};
-  expected.listeners = {{"left", {0.25, 0.4, 0.3}}, {"right", {0.35, 0.4, 0.3}}};
+  expected.listeners = {{"left", {0.25, 0.4, 0.3}, std::nullopt}, {"right", {0.35, 0.4, 0.3}, std::nullopt}};
   expected.sampleRate = 44100;
   expected.solver = {sim::TransferScheme::Flip, 0.9, 4, 1e-5, 200, sim::SurfaceMethod::LevelSet};
 

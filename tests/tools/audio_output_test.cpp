@@ -7,6 +7,7 @@
 #include <openvdb/version.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -110,6 +111,44 @@ TEST(AudioOutput, SynthReportsTheCalibratedScaleLoudnessAndChannelNames) {
   EXPECT_NEAR(audio["integrated_loudness_lufs"].get<double>(), *m.integratedLufs, 0.01);
   EXPECT_NEAR(audio["true_peak_dbtp"].get<double>(), m.truePeakDbtp, 0.01);
   EXPECT_EQ(audio["channels"], nlohmann::json::parse(R"(["near", "far", "under & over"])"));
+}
+
+// Claim (issue 20; docs/binaural.md): a listener that is a head gives two channels named after it,
+// at 48 kHz through the KEMAR set resampled from 44.1 kHz; bubbles to its left are louder in its
+// left ear; a bad `hrtf` is one line naming the bubble file and the field, and writes nothing.
+TEST(AudioOutput, SynthRendersAHeadAsTwoNamedEars) {
+  const TempFolder folder;
+  const std::string text = R"({"format": "fluidsound.bubbles/1", "sample_rate": 48000, "duration": 1.0,
+    "listeners": ["near", "ears"],
+    "heads": [{"listener": "ears", "position": [0, 0, 0], "facing": [0, 0, 1], "up": [0, 1, 0]}],
+    "bubbles": [
+    {"radius": 0.001, "birth": 0.05, "track": [{"t": 0.05, "depth": 0.02, "transfer": [1, 0.5], "position": [2, 0, 0]}]},
+    {"radius": 0.002, "birth": 0.4, "track": [{"t": 0.4, "depth": 0.03, "transfer": [0.8, 0.4], "position": [2, 0.1, 0]}]}]})";
+  const fs::path bubbles = writeText(folder.path() / "b.json", text);
+  const fs::path wav = folder.path() / "ears.wav";
+  const CommandOutcome r = runFluidsound({"synth", bubbles.string(), "-o", wav.string(), "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json audio = readJson(folder.path() / "ears.wav.report.json")["results"]["audio_output"];
+  EXPECT_EQ(audio["channels"], nlohmann::json::parse(R"(["near", "ears.left", "ears.right"])"));
+  const io::AudioBuffer written = io::readAudio(wav);
+  ASSERT_EQ(written.channels.size(), 3u);
+  EXPECT_EQ(written.sampleRate, 48000.0);
+  const auto energy = [](const std::vector<float>& x) {
+    double e = 0.0;
+    for (float v : x) e += static_cast<double>(v) * v;
+    return e;
+  };
+  EXPECT_GT(energy(written.channels[1]), 2.0 * energy(written.channels[2]));  // left ear, left side
+
+  nlohmann::json bad = nlohmann::json::parse(text);
+  bad["hrtf"] = "missing.sofa";
+  const fs::path badFile = writeText(folder.path() / "bad.json", bad.dump());
+  const fs::path badWav = folder.path() / "bad.wav";
+  const CommandOutcome refused = runFluidsound({"synth", badFile.string(), "-o", badWav.string(), "--quiet"});
+  EXPECT_NE(refused.exitCode, 0);
+  EXPECT_NE(refused.err.find("bad.json: hrtf: expected a SOFA file"), std::string::npos) << refused.err;
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_FALSE(fs::exists(badWav));
 }
 
 // Claim (issue 17): synth's report names the oscillator kernel that ran, so its

@@ -144,7 +144,7 @@ const std::vector<SimulateCase> kSimulateCases = {
      "|v| = 1000000.0 m/s"},
     {"audio_too_long", Input::Scene, "/time", R"({"duration": 30000, "fps": 30})", Output::Fresh, "out",
      kExitBadInput, "scene.json",
-     "time.duration: expected a duration whose audio (duration × audio.sample_rate × listeners) is at most 2^31 "
+     "time.duration: expected a duration whose audio (duration × audio.sample_rate × channels) is at most 2^31 "
      "samples, found 30000 s × 44100 Hz × 2 = 2.646e+09 samples"},
 
     // ---- bad input: the file itself, unknown keys, and bad input before bad output --------------
