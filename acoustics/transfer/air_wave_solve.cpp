@@ -144,9 +144,32 @@ struct RigidFace {
   int axis;
   std::size_t face;
   double rigid;  ///< 1 − open fraction
-  /// Per source (the listener, then its image if any): R [m] and (x_f − x_source)_a / R.
-  std::array<double, 2> distance{}, cosine{};
+  /// Per source (the listener, then its images): R [m] and (x_f − x_source)_a / R.
+  std::array<double, kMaxKnownSources> distance{}, cosine{};
 };
+
+/// The known field's monopoles: the listener and its images in the ground and the walls, each
+/// plane mirroring every source before it (exact for planes at right angles: one per axis).
+std::vector<Vec3> knownSources(const Vec3& listener, const AirWaveOptions& options) {
+  std::vector<RigidPlane> planes = options.walls;
+  if (options.groundHeight) planes.push_back({1, *options.groundHeight});
+  std::array<bool, 3> used{};
+  for (const RigidPlane& plane : planes) {
+    if (plane.axis < 0 || plane.axis > 2 || used[plane.axis] || !std::isfinite(plane.position))
+      throw std::invalid_argument("airSidePressure: rigid planes must be finite, one per axis");
+    used[plane.axis] = true;
+  }
+  std::vector<Vec3> sources{listener};
+  for (const RigidPlane& plane : planes) {
+    const std::size_t count = sources.size();
+    for (std::size_t s = 0; s < count; ++s) {
+      Vec3 image = sources[s];
+      image[plane.axis] = 2.0 * plane.position - image[plane.axis];
+      sources.push_back(image);
+    }
+  }
+  return sources;
+}
 
 /// Every face whose rigid part borders air, with its distances and direction cosines to the
 /// known field's monopoles. @throws std::invalid_argument when a monopole is on a rigid face
@@ -260,9 +283,7 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
       faceDecay[a].push_back(std::exp(-sigmaMax * std::pow(g.depthInLayer(a, i), 2) * dt));
   }
 
-  std::vector<Vec3> sources{listener};  // the known field's monopoles
-  if (options.groundHeight)
-    sources.push_back({listener[0], 2.0 * *options.groundHeight - listener[1], listener[2]});
+  const std::vector<Vec3> sources = knownSources(listener, options);
   const std::vector<RigidFace> rigid = rigidFaces(g, sources);
   double farthest = 0.0;
   for (int corner = 0; corner < 8; ++corner) {

@@ -25,6 +25,15 @@
 
 namespace fluidsound::acoustics {
 
+/// An infinite rigid plane x_axis = position [m] (axis 0, 1, 2 = x, y, z).
+struct RigidPlane {
+  int axis = 0;
+  double position = 0.0;
+};
+
+/// At most this many monopoles in the known field: the listener and its images in three planes.
+inline constexpr std::size_t kMaxKnownSources = 8;
+
 /// Settings of one air-side solve.
 struct AirWaveOptions {
   /// Highest frequency [Hz] asked for: the pulse's spectrum is 10⁻³ of its peak there. The
@@ -42,6 +51,11 @@ struct AirWaveOptions {
   /// image in the plane, and the solve finds only what the rest of the geometry scatters, which
   /// leaves through the absorbing layer. Without it the known field is the free field alone.
   std::optional<double> groundHeight;
+  /// Rigid walls that go on beyond the grid (a room's or a long tank's), at right angles to the
+  /// ground and to each other (one per axis, not y when there is a ground): the known field holds
+  /// the images in them too, so the layer need not absorb their reflection of the source. A wall
+  /// the grid holds but this list does not name is cut off at the grid's edge.
+  std::vector<RigidPlane> walls;
 };
 
 /// @brief p_L [Pa per m³/s] at each probe point and angular frequency, from a unit volume-velocity
