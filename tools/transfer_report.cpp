@@ -15,7 +15,8 @@ nlohmann::ordered_json geometricStats(const acoustics::GeometricTransferStats& s
       {"factorisations", s.factorisations},      {"solves", s.solves},
       {"max_unknowns", s.maxUnknowns},           {"samples_outside_liquid", s.samplesOutsideLiquid},
       {"samples_above_limit", s.samplesAboveLimit}, {"air_solves", s.airSolves},
-      {"air_samples", s.airSamples},
+      {"air_samples", s.airSamples},            {"air_seconds", s.airSeconds},
+      {"air_megabytes", static_cast<double>(s.airBytes) / 1e6},
       {"max_frequency_hz", s.maxFrequency},      {"solve_seconds", s.solveSeconds}};
 }
 

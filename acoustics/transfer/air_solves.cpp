@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace fluidsound::acoustics {
@@ -12,6 +13,7 @@ AirSolves::AirSolves(const std::vector<std::pair<int, FrameSamples>>& work,
                      const FrameWaterGrids& grids, const TransferSetup& setup,
                      const WaveAirOptions& options)
     : fps_(setup.fps), interval_(options.interval) {
+  const auto start = std::chrono::steady_clock::now();
   std::vector<int> indices;
   for (const auto& [frame, samples] : work) indices.push_back(indexOf(frame));
   std::sort(indices.begin(), indices.end());
@@ -30,6 +32,13 @@ AirSolves::AirSolves(const std::vector<std::pair<int, FrameSamples>>& work,
     for (std::size_t l = 0; l < listeners; ++l) entry.push_back(fields[i * listeners + l].get());
   }
   fields_ = std::move(fields);
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::size_t AirSolves::bytes() const {
+  std::size_t total = 0;
+  for (const auto& field : fields_) total += field->bytes();
+  return total;
 }
 
 const FrameAirFields& AirSolves::forFrame(int frame) const {

@@ -32,10 +32,14 @@ class AirSolves {
   const FrameAirFields& forFrame(int frame) const;
   /// Solves held (listeners × solve times).
   std::size_t count() const { return fields_.size(); }
+  /// Wall-clock time the solves took [s].
+  double seconds() const { return seconds_; }
+  /// Memory the solved fields hold [bytes].
+  std::size_t bytes() const;
 
  private:
   int indexOf(int frame) const;
-  double fps_ = 30.0, interval_ = 0.0;
+  double fps_ = 30.0, interval_ = 0.0, seconds_ = 0.0;
   std::vector<std::unique_ptr<WaveAirField>> fields_;
   std::map<int, FrameAirFields> byIndex_;
   FrameAirFields none_;  ///< what a frame without a solve reads

@@ -127,6 +127,9 @@ class AirGrid {
 };
 
 /// The listener's monopole: volume velocity q(t) = exp(−((t − t₀)/τ)²) [m³/s].
+/// Half-width of the pulse's support in units of τ: beyond it q < e⁻⁶⁴.
+constexpr double kPulseSupport = 8.0;
+
 struct GaussianPulse {
   double tau, t0;
   double q(double t) const { const double x = (t - t0) / tau; return std::exp(-x * x); }
@@ -144,6 +147,7 @@ struct RigidFace {
   int axis;
   std::size_t face;
   double rigid;  ///< 1 − open fraction
+  std::size_t lo, hi;  ///< the cells below and above it along `axis`
   /// Per source (the listener, then its images): R [m] and (x_f − x_source)_a / R.
   std::array<double, kMaxKnownSources> distance{}, cosine{};
 };
@@ -193,7 +197,7 @@ std::vector<RigidFace> rigidFaces(const AirGrid& g, const std::vector<Vec3>& sou
           std::array<double, 3> centre{i + 0.5, j + 0.5, k + 0.5};
           centre[a] -= 0.5;
           const Vec3 x = g.world(centre[0], centre[1], centre[2]);
-          RigidFace rf{a, face, 1.0 - g.open(a, face)};
+          RigidFace rf{a, face, 1.0 - g.open(a, face), g.cell(lo[0], lo[1], lo[2]), g.cell(i, j, k)};
           for (std::size_t s = 0; s < sources.size(); ++s) {
             const Vec3& y = sources[s];
             const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
@@ -236,6 +240,33 @@ std::vector<long> probeCells(const AirGrid& g, std::span<const Vec3> probes) {
     probeCell.push_back(found);
   }
   return probeCell;
+}
+
+/// A row of cells inside the grid proper, [from, to): p −= f · the net flux of the open faces
+/// (o·v on each cell's upper face minus its lower face, the upper faces u₁, u₂ on along y and z).
+/// Raw pointers, so that the row vectorises.
+void pressureRowInside(double* __restrict p, const double* __restrict f, const double* __restrict o0,
+                       const double* __restrict v0, const double* __restrict o1, const double* __restrict v1,
+                       std::size_t u1, const double* __restrict o2, const double* __restrict v2, std::size_t u2,
+                       int from, int to) {
+  for (int i = from; i < to; ++i)
+    p[i] -= f[i] * (o0[i + 1] * v0[i + 1] - o0[i] * v0[i] + o1[i + u1] * v1[i + u1] - o1[i] * v1[i] +
+                    o2[i + u2] * v2[i + u2] - o2[i] * v2[i]);
+}
+
+/// A row of cells in the absorbing layer, [from, to): each axis's part of p takes its own flux
+/// and decays by its own factor (dx per cell, dy and dz for the row); p is their sum.
+void pressureRowLayer(double* __restrict p, double* __restrict px, double* __restrict py, double* __restrict pz,
+                      const double* __restrict f, const double* __restrict dx, double dy, double dz,
+                      const double* __restrict o0, const double* __restrict v0, const double* __restrict o1,
+                      const double* __restrict v1, std::size_t u1, const double* __restrict o2,
+                      const double* __restrict v2, std::size_t u2, int from, int to) {
+  for (int i = from; i < to; ++i) {
+    px[i] = dx[i] * (px[i] - f[i] * (o0[i + 1] * v0[i + 1] - o0[i] * v0[i]));
+    py[i] = dy * (py[i] - f[i] * (o1[i + u1] * v1[i + u1] - o1[i] * v1[i]));
+    pz[i] = dz * (pz[i] - f[i] * (o2[i + u2] * v2[i + u2] - o2[i] * v2[i]));
+    p[i] = px[i] + py[i] + pz[i];
+  }
 }
 
 /// One run of the solve: the scattered pressure at each probe's cell, every step.
@@ -299,12 +330,10 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
   for (auto& pa : part) pa.assign(g.cellCount(), 0.0);
   std::vector<double> p(g.cellCount(), 0.0);  // their sum
   std::array<std::vector<double>, 3> v;
-  std::array<std::vector<double>, 3> vInc;  // −v_inc·e_a·(1 − open) on rigid faces, this step
   for (int a = 0; a < 3; ++a) {
     std::array<std::size_t, 3> f{std::size_t(n[0]), std::size_t(n[1]), std::size_t(n[2])};
     ++f[a];
     v[a].assign(f[0] * f[1] * f[2], 0.0);
-    vInc[a].assign(f[0] * f[1] * f[2], 0.0);
   }
   Recording rec;
   rec.dt = dt;
@@ -325,6 +354,25 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
   }
 
   const std::array<std::size_t, 3> stride{1, std::size_t(n[0]), std::size_t(n[0]) * n[1]};
+  // dt ρc²/(h V) per cell, 0 where there is no air.
+  std::vector<double> cellFactor(g.cellCount(), 0.0);
+  for (std::size_t cc = 0; cc < cellFactor.size(); ++cc)
+    if (g.air(cc)) cellFactor[cc] = dt * rho * c * c / (h * g.volume(cc));
+  // 1 on a face with an open part, 0 on a closed one.
+  std::array<std::vector<double>, 3> faceMask;
+  for (int a = 0; a < 3; ++a) {
+    faceMask[a].resize(v[a].size());
+    for (std::size_t f = 0; f < faceMask[a].size(); ++f) faceMask[a][f] = g.open(a, f) > 0.0 ? 1.0 : 0.0;
+  }
+  // A cell's decay factor along axis a.
+  const auto cellDecayOf = [&](int a, std::size_t cell) {
+    const std::size_t coordinate = a == 0 ? cell % n[0] : a == 1 ? cell / n[0] % n[1] : cell / stride[2];
+    return cellDecay[a][coordinate];
+  };
+  // The cells along x that no part of the layer damps: [inside[0], inside[1]).
+  std::array<int, 2> inside{n[0], n[0]};
+  for (int i = 0; i < n[0]; ++i)
+    if (cellDecay[0][i] == 1.0) inside[0] = std::min(inside[0], i), inside[1] = i + 1;
   for (long step = 0; step < steps; ++step) {
     // v^{n+1/2} from p^n on the open faces, a row of faces along x at a time (faces and cells
     // are both contiguous in i); the outer faces of the layer are closed and skipped.
@@ -333,58 +381,88 @@ Recording record(const WaterGrid& grid, const Vec3& listener, std::span<const Ve
       for (int k = r.begin(); k < r.end(); ++k)
         for (int a = 0; a < 3; ++a) {
           if (a == 2 && k == 0) continue;
-          const double* open = g.openFractions(a);
           double* va = v[a].data();
           for (int j = (a == 1 ? 1 : 0); j < n[1]; ++j) {
             const std::size_t face0 = g.face(a, 0, j, k), cell0 = g.cell(0, j, k);
-            const double rowDecay = a == 1 ? faceDecay[1][j] : faceDecay[2][k];
-            for (int i = (a == 0 ? 1 : 0); i < n[0]; ++i) {
-              const std::size_t f = face0 + i;
-              if (open[f] <= 0.0) continue;
-              const std::size_t hi = cell0 + i, lo = hi - stride[a];
-              const double decayHere = a == 0 ? faceDecay[0][i] : rowDecay;
-              va[f] = decayHere * (va[f] - push * (p[hi] - p[lo]));
+            // Branch-free, so the row vectorises: a closed face (mask 0) keeps v = 0.
+            const double* __restrict m = faceMask[a].data() + face0;
+            double* __restrict vr = va + face0;
+            const double* __restrict above = p.data() + cell0;
+            const double* __restrict below = above - stride[a];
+            if (a == 0) {
+              const double* __restrict decay = faceDecay[0].data();
+              for (int i = 1; i < n[0]; ++i) {
+                const double next = decay[i] * (vr[i] - push * (above[i] - below[i]));
+                vr[i] = m[i] * next;
+              }
+            } else {
+              const double decay = a == 1 ? faceDecay[1][j] : faceDecay[2][k];
+              for (int i = 0; i < n[0]; ++i) {
+                const double next = decay * (vr[i] - push * (above[i] - below[i]));
+                vr[i] = m[i] * next;
+              }
             }
           }
         }
     });
-    const double t = (step + 0.5) * dt;
-    for (const RigidFace& rf : rigid) {
-      double normal = 0.0;
-      for (std::size_t s = 0; s < sources.size(); ++s) {
-        const double r = rf.distance[s], tr = t - r / c;
-        const double q = pulse.q(tr);
-        normal += (q / (4.0 * kPi * r * r) + pulse.dq(tr, q) / (4.0 * kPi * r * c)) * rf.cosine[s];
-      }
-      vInc[rf.axis][rf.face] = -rf.rigid * normal;
-    }
-    // p^{n+1} from the flux through each face: open part v, rigid part −v_inc; a row of cells
-    // along x at a time. A cell's upper face along x, y, z is 1, n_x, n_x·n_y faces on.
+
+    // p^{n+1} from the flux through the open part of each face (the rigid part's below); a row
+    // of cells along x at a time. A cell's upper face along x, y, z is 1, n_x, n_x·n_y faces on.
     const std::array<std::size_t, 3> upFace{1, std::size_t(n[0]), std::size_t(n[0]) * n[1]};
-    const double stiffness = dt * rho * c * c;
     tbb::parallel_for(tbb::blocked_range<int>(0, n[2]), [&](const tbb::blocked_range<int>& r) {
       for (int k = r.begin(); k < r.end(); ++k)
         for (int j = 0; j < n[1]; ++j) {
           const std::size_t cell0 = g.cell(0, j, k);
           const std::array<std::size_t, 3> face0{g.face(0, 0, j, k), g.face(1, 0, j, k), g.face(2, 0, j, k)};
-          for (int i = 0; i < n[0]; ++i) {
-            const std::size_t cc = cell0 + i;
-            if (!g.air(cc)) continue;
-            const double factor = stiffness / (h * g.volume(cc));
-            const std::array<int, 3> at{i, j, k};
-            double sum = 0.0;
-            for (int a = 0; a < 3; ++a) {
-              const std::size_t fl = face0[a] + i, fh = fl + upFace[a];
-              const double* open = g.openFractions(a);
-              const double flux = open[fh] * v[a][fh] + vInc[a][fh] - open[fl] * v[a][fl] - vInc[a][fl];
-              double& pa = part[a][cc];
-              pa = cellDecay[a][at[a]] * (pa - factor * flux);
-              sum += pa;
-            }
-            p[cc] = sum;
-          }
+          // Branch-free rows (a cell that is not air has factor 0 and stays at 0). Inside the
+          // grid proper no part is damped, so p itself takes the whole flux; the split parts are
+          // kept only in the layer, where a cell's parts decay apart.
+          const double* __restrict f = cellFactor.data() + cell0;
+          double* __restrict pr = p.data() + cell0;
+          // Each axis's open fractions and velocities from this row's lower faces; a cell's upper
+          // face is 1, n_x, n_x·n_y faces on.
+          const double* __restrict o0 = g.openFractions(0) + face0[0];
+          const double* __restrict o1 = g.openFractions(1) + face0[1];
+          const double* __restrict o2 = g.openFractions(2) + face0[2];
+          const double* __restrict v0 = v[0].data() + face0[0];
+          const double* __restrict v1 = v[1].data() + face0[1];
+          const double* __restrict v2 = v[2].data() + face0[2];
+          const std::size_t u1 = upFace[1], u2 = upFace[2];
+          const int inFrom = cellDecay[1][j] == 1.0 && cellDecay[2][k] == 1.0 ? inside[0] : n[0];
+          const int inTo = inFrom < n[0] ? inside[1] : n[0];
+          pressureRowInside(pr, f, o0, v0, o1, v1, u1, o2, v2, u2, inFrom, inTo);
+          double* px = part[0].data() + cell0;
+          double* py = part[1].data() + cell0;
+          double* pz = part[2].data() + cell0;
+          const double dy = cellDecay[1][j], dz = cellDecay[2][k];
+          const double* dx = cellDecay[0].data();
+          pressureRowLayer(pr, px, py, pz, f, dx, dy, dz, o0, v0, o1, v1, u1, o2, v2, u2, 0, std::min(inFrom, n[0]));
+          if (inFrom < n[0]) pressureRowLayer(pr, px, py, pz, f, dx, dy, dz, o0, v0, o1, v1, u1, o2, v2, u2, inTo, n[0]);
         }
     });
+    // The rigid part of each face carries −v_inc (the scattered field cancels the known one's
+    // normal velocity there): its flux, out of the cell below and into the cell above, while the
+    // pulse passes the face. Added after the open faces' flux, as the same update would, in the
+    // face's axis part (inside the grid proper the parts are unused and p takes it alone).
+    const double t = (step + 0.5) * dt;
+    for (const RigidFace& rf : rigid) {
+      double normal = 0.0;
+      for (std::size_t s = 0; s < sources.size(); ++s) {
+        const double r = rf.distance[s], tr = t - r / c;
+        // Beyond 8τ from its peak the pulse is below e⁻⁶⁴ ≈ 10⁻²⁸ of it: nothing arrives.
+        if (std::abs(tr - pulse.t0) > kPulseSupport * pulse.tau) continue;
+        const double q = pulse.q(tr);
+        normal += (q / (4.0 * kPi * r * r) + pulse.dq(tr, q) / (4.0 * kPi * r * c)) * rf.cosine[s];
+      }
+      if (normal == 0.0) continue;
+      const double vInc = -rf.rigid * normal;
+      const int a = rf.axis;
+      for (const auto& [cell, sign] : {std::pair{rf.lo, -1.0}, std::pair{rf.hi, 1.0}}) {
+        const double delta = sign * cellDecayOf(a, cell) * cellFactor[cell] * vInc;
+        part[a][cell] += delta;
+        p[cell] += delta;
+      }
+    }
     for (std::size_t s = 0; s < probes.size(); ++s)
       if (probeCell[s] >= 0) rec.scattered[s].push_back(p[static_cast<std::size_t>(probeCell[s])]);
   }

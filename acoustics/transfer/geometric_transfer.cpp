@@ -404,6 +404,8 @@ TransferResult computeGeometricTransfer(BubbleTrackSet tracks, const FrameWaterG
   });
   TransferResult result;
   result.geometric.airSolves = air.count();
+  result.geometric.airSeconds = air.seconds();
+  result.geometric.airBytes = air.bytes();
   for (const GeometricTransferStats& s : frameStats) addStats(result.geometric, s);
   result.bubbles = tracks.bubbles.size();
   for (const auto& frame : work) result.samples += frame.second.size();

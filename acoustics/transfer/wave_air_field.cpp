@@ -236,4 +236,12 @@ std::optional<std::complex<double>> WaveAirField::at(const Vec3& x, double angul
   return smooth * std::polar(1.0, -angularFrequency / air_.soundSpeed * r);
 }
 
+std::size_t WaveAirField::bytes() const {
+  std::size_t total = sizeof(*this) + grid_.phi.size() * sizeof(float) + grid_.cellOpen.size() * sizeof(float) +
+                      probePoint_.size() * sizeof(Vec3) + probeOfCell_.size() * 2 * sizeof(std::size_t);
+  for (const auto& faces : grid_.faceOpen) total += faces.size() * sizeof(float);
+  for (const auto& bins : spectrum_) total += bins.size() * sizeof(std::complex<float>);
+  return total;
+}
+
 }  // namespace fluidsound::acoustics

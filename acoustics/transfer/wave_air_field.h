@@ -56,6 +56,8 @@ class WaveAirField {
   ///        one near the liquid within one cell, read between frequency bins; nothing above
   ///        maxFrequency() or where no solved cell is near.
   std::optional<std::complex<double>> at(const Vec3& x, double angularFrequency) const;
+  /// Memory the field holds [bytes]: its spectra and grid.
+  std::size_t bytes() const;
 
  private:
   WaterGrid grid_;  ///< the merged air grid (φ, faces), for locating points
