@@ -139,9 +139,36 @@ class TrackSetReader {
                 bubble.track.empty() ? "no track" : "no position");
   }
 
+  /// A bubble's `ring`: the resonator's frequency and decay, and per listener a gain and a phase.
+  acoustics::ResonatorRing resonatorRing(const json& object, const std::string& path) {
+    check_.rejectUnknownKeys(object, path, {"frequency", "decay_rate", "gain", "phase"});
+    acoustics::ResonatorRing ring;
+    ring.frequency = check_.requiredNumber(object, path, "frequency", rangeText(1, 100000, "Hz"),
+                                           [](double v) { return v >= 1 && v <= 100000; });
+    ring.decayRate = check_.requiredNumber(object, path, "decay_rate", rangeText(0.1, 1e6, "1/s"),
+                                           [](double v) { return v >= 0.1 && v <= 1e6; });
+    const auto list = [&](std::string_view key, double bound, const std::string& unit) {
+      const std::string listPath = memberPath(path, key);
+      const std::string expected = "an array of " + std::to_string(channelCount_) + " numbers (one per listener)";
+      const json* values = findMember(object, key);
+      if (values == nullptr) check_.fail(listPath, expected, std::string(kMissing));
+      if (!values->is_array() || values->size() != channelCount_) check_.fail(listPath, expected, describe(*values));
+      std::vector<double> out;
+      for (std::size_t k = 0; k < values->size(); ++k)
+        out.push_back(check_.number((*values)[k], elementPath(listPath, k), rangeText(-bound, bound, unit),
+                                    [bound](double v) { return v >= -bound && v <= bound; }));
+      return out;
+    };
+    ring.gain = list("gain", kMaxTransfer, "ratio");
+    for (std::size_t k = 0; k < ring.gain.size(); ++k)
+      if (ring.gain[k] < 0) check_.fail(elementPath(memberPath(path, "gain"), k), "a number >= 0 (ratio)", formatNumber(ring.gain[k]));
+    ring.phase = list("phase", 4.0, "radians");
+    return ring;
+  }
+
   BubbleTrack bubble(const json& object, const std::string& path) {
     check_.requireObject(object, path, "an object with radius and birth");
-    check_.rejectUnknownKeys(object, path, {"radius", "birth", "amplitude", "track"});
+    check_.rejectUnknownKeys(object, path, {"radius", "birth", "amplitude", "rings", "track"});
     BubbleTrack bubble;
     bubble.radius = check_.requiredNumber(object, path, "radius",
                                           rangeText(kMinBubbleRadius, kMaxBubbleRadius, "metres"), isBubbleRadius);
@@ -151,6 +178,13 @@ class TrackSetReader {
       bubble.amplitude = check_.number(*amplitude, memberPath(path, "amplitude"),
                                        rangeText(kMinBubbleAmplitude, kMaxBubbleAmplitude, "Pa at 1 m"),
                                        isBubbleAmplitude);
+    }
+    if (const json* rings = check_.optionalArray(object, path, "rings", "an array of rings")) {
+      for (std::size_t k = 0; k < rings->size(); ++k) {
+        const std::string ringPath = elementPath(memberPath(path, "rings"), k);
+        check_.requireObject((*rings)[k], ringPath, "an object with frequency, decay_rate, gain and phase");
+        bubble.rings.push_back(resonatorRing((*rings)[k], ringPath));
+      }
     }
     if (const json* track =
             check_.optionalArray(object, path, "track", "an array of track samples")) {
@@ -270,6 +304,22 @@ std::string formatTrackSet(const BubbleTrackSet& set) {
     if (bubble.amplitude) {
       out += ",\"amplitude\":";
       appendNumber(out, *bubble.amplitude);
+    }
+    for (std::size_t k = 0; k < bubble.rings.size(); ++k) {
+      const acoustics::ResonatorRing& r = bubble.rings[k];
+      out += k == 0 ? ",\"rings\":[{\"frequency\":" : ",{\"frequency\":";
+      appendNumber(out, r.frequency);
+      out += ",\"decay_rate\":";
+      appendNumber(out, r.decayRate);
+      for (const auto& [key, values] : {std::pair{",\"gain\":[", &r.gain}, std::pair{",\"phase\":[", &r.phase}}) {
+        out += key;
+        for (std::size_t k = 0; k < values->size(); ++k) {
+          if (k > 0) out += ',';
+          appendNumber(out, (*values)[k]);
+        }
+        out += ']';
+      }
+      out += k + 1 == bubble.rings.size() ? "}]" : "}";
     }
     if (!bubble.track.empty()) {
       out += ",\"track\":[";

@@ -24,6 +24,7 @@ void addSynthResults(RunReport& report, const SynthOptions& o, const SynthRender
   report.result("duration_seconds", render.stage.durationSeconds());
   report.result("channels", static_cast<double>(render.channels));
   report.result("peak_pascals", r.peakPascals);
+  report.result("ring_samples", r.ringSamples);
   // The inner loop that ran (acoustics/synthesis/oscillator_kernel.h): a speed figure says what it
   // measured.
   report.result("oscillator_kernel", std::string(acoustics::oscillatorKernelName(r.kernel)));

@@ -16,7 +16,7 @@ nlohmann::ordered_json geometricStats(const acoustics::GeometricTransferStats& s
       {"max_unknowns", s.maxUnknowns},           {"samples_outside_liquid", s.samplesOutsideLiquid},
       {"samples_above_limit", s.samplesAboveLimit}, {"air_solves", s.airSolves},
       {"air_samples", s.airSamples},            {"air_seconds", s.airSeconds},
-      {"air_megabytes", static_cast<double>(s.airBytes) / 1e6},
+      {"air_megabytes", static_cast<double>(s.airBytes) / 1e6}, {"rings", s.rings},
       {"max_frequency_hz", s.maxFrequency},      {"solve_seconds", s.solveSeconds}};
 }
 

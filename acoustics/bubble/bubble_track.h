@@ -25,12 +25,26 @@ struct TrackSample {
   bool operator==(const TrackSample&) const = default;
 };
 
+/// The free ring of a resonator between a bubble and the listeners (a vessel's air column): what
+/// the resonator goes on sounding at its own frequency after the bubble's onset, beside the
+/// bubble's own sound that the transfer weights (docs/transfer.md, "The air column's ring").
+/// For listener l: A·gain_l·e^{−β_r τ}·cos(2πf τ + phase_l), τ = t − birth ≥ 0, A the bubble's
+/// free-field amplitude at 1 m.
+struct ResonatorRing {
+  double frequency = 0.0;     ///< f [Hz]
+  double decayRate = 0.0;     ///< β_r [1/s]
+  std::vector<double> gain;   ///< per listener [-]
+  std::vector<double> phase;  ///< per listener [rad]
+  bool operator==(const ResonatorRing&) const = default;
+};
+
 /// One bubble: its size, birth and (optionally) its per-frame track.
 struct BubbleTrack {
   double radius = 0.0;               ///< R [m], > 0
   double birth = 0.0;                ///< birth time [s], ≥ 0
   std::optional<double> amplitude;   ///< free-field pressure amplitude at 1 m [Pa]; else from the excitation model
   std::vector<TrackSample> track;    ///< in time order; empty: deep in open water, transfer 1
+  std::vector<ResonatorRing> rings;  ///< the transfer stage's, one per resonance it found
   bool operator==(const BubbleTrack&) const = default;
 };
 

@@ -47,6 +47,13 @@ BubbleTrackSet directionChannels(const BubbleTrackSet& tracks, std::size_t liste
       s.transfer.assign(channels, 0.0);
       s.transfer[slot[m]] = t;
     }
+    for (ResonatorRing& ring : bubble.rings) {  // heard at the head's centre, from the bubble's direction
+      const double gain = ring.gain[listener], phase = ring.phase[listener];
+      ring.gain.assign(channels, 0.0);
+      ring.phase.assign(channels, 0.0);
+      ring.gain[slot[m]] = gain;
+      ring.phase[slot[m]] = phase;
+    }
     set.bubbles.push_back(std::move(bubble));
   }
   return set;

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "acoustics/synthesis/oscillator_bank.h"
+#include "acoustics/synthesis/resonator_rings.h"
 #include "acoustics/synthesis/synthesis_voice.h"
 
 namespace fluidsound::acoustics {
@@ -176,6 +177,7 @@ SynthesisResult synthesize(const BubbleTrackSet& tracks, const SynthesisSettings
     });
     if (progress) progress(static_cast<double>(w1) / static_cast<double>(segments));
   }
+  report.ringSamples = addResonatorRings(tracks, settings, result.channels);
   for (const auto& ch : result.channels)
     for (float x : ch)
       report.peakPascals = std::max(report.peakPascals, static_cast<double>(std::fabs(x)));

@@ -36,6 +36,7 @@ struct SynthesisReport {
   std::int64_t depthsClamped = 0;       ///< track samples shallower than 1.25 R (shift clamped)
   std::int64_t frames = 0;              ///< samples per channel
   double peakPascals = 0.0;             ///< largest |sample| over all channels [Pa]
+  std::int64_t ringSamples = 0;         ///< resonator ring samples added (resonator_rings.h)
   OscillatorKernel kernel = OscillatorKernel::baseline;  ///< the inner loop that ran
 };
 

@@ -1,4 +1,5 @@
 // acoustics/synthesis/synthesizer_reference.cpp — see synthesizer_reference.h.
+#include "acoustics/synthesis/resonator_rings.h"
 #include "acoustics/synthesis/synthesizer_reference.h"
 
 #include <algorithm>
@@ -73,6 +74,7 @@ std::vector<std::vector<float>> synthesizeReference(const BubbleTrackSet& tracks
         out[l][b * kBlockSamples + n] =
             pairwiseSum(&accumulator[(l * kBlockSamples + n) * kOscillatorLanes], kOscillatorLanes);
   }
+  addResonatorRings(tracks, settings, out);  // the same rings, added the same way
   return out;
 }
 

@@ -73,6 +73,7 @@ TransferResult computeTransfer(BubbleTrackSet tracks, const FrameSurfaces& frame
                                const TransferSetup& setup, StageObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   TransferResult result;
+  for (BubbleTrack& b : tracks.bubbles) b.rings.clear();  // an earlier run's: this model has none
   const std::vector<std::pair<int, FrameSamples>> work = samplesByFrame(tracks, setup);
   forEachFrameInChunks(work, observer, [&](std::size_t f) {
     transferOfFrame(tracks, work[f].first, work[f].second, frames, setup);

@@ -70,6 +70,7 @@ struct GeometricTransferStats {
   std::size_t airSolves = 0;   ///< wave solves of the air side (per listener and solve time)
   std::size_t airSamples = 0;  ///< samples whose p_L came from them (adjoint route)
   double airSeconds = 0.0;     ///< wall-clock time of the air side's wave solves [s]
+  std::size_t rings = 0;       ///< bubbles given an air column's ring (resonator_ring.h)
   std::size_t airBytes = 0;    ///< memory their fields hold until the stage ends [bytes]
   double solveSeconds = 0.0;         ///< summed over threads: assembly, factorisation, solves
   bool operator==(const GeometricTransferStats&) const = default;

@@ -236,6 +236,67 @@ std::optional<std::complex<double>> WaveAirField::at(const Vec3& x, double angul
   return smooth * std::polar(1.0, -angularFrequency / air_.soundSpeed * r);
 }
 
+std::vector<AirResonance> WaveAirField::resonances() const {
+  if (!(binSpacing_ > 0.0)) return {};
+  std::size_t bins = 0;  // a probe the solve found no air cell for has none
+  for (const auto& s : spectrum_) bins = std::max(bins, s.size());
+  if (bins < 3) return {};
+  // The largest gain over the probes per bin, |p_L| ÷ (2ωρ_a/(4πR)) the doubled free field's
+  // magnitude: a vessel's probes share its resonances, and the open liquid around it would
+  // dilute a mean.
+  std::vector<double> gain(bins, 0.0);
+  for (std::size_t s = 0; s < spectrum_.size(); ++s) {
+    if (spectrum_[s].size() != bins) continue;
+    const Vec3& x = probePoint_[s];
+    const double r = std::hypot(x[0] - listener_[0], x[1] - listener_[1], x[2] - listener_[2]);
+    for (std::size_t q = 1; q < bins; ++q) {
+      const double omega = 2.0 * std::numbers::pi * binSpacing_ * static_cast<double>(q);
+      gain[q] = std::max(gain[q], std::abs(std::complex<double>(spectrum_[s][q])) * 4.0 *
+                                      std::numbers::pi * r / (2.0 * omega * air_.density));
+    }
+  }
+  const auto first = std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(kResonanceLowHz / binSpacing_)));
+  const auto last = std::min(bins - 2, static_cast<std::size_t>(std::min(kResonanceHighHz, maxFrequency_) / binSpacing_));
+  struct Peak {
+    AirResonance resonance;
+    double below, above;  // half-power points [bins]
+  };
+  std::vector<Peak> peaks;
+  for (std::size_t peak = first; peak <= last; ++peak) {
+    if (gain[peak] < kMinResonanceGain || gain[peak] < gain[peak - 1] || gain[peak] <= gain[peak + 1]) continue;
+    // The half-power points, each between the bins where the gain crosses peak/√2.
+    const double half = gain[peak] / std::sqrt(2.0);
+    std::optional<double> below, above;
+    for (std::size_t q = peak; q > 1 && !below; --q)
+      if (gain[q - 1] < half) below = (q - 1) + (half - gain[q - 1]) / (gain[q] - gain[q - 1]);
+    for (std::size_t q = peak; q + 1 < bins && !above; ++q)
+      if (gain[q + 1] < half) above = q + (gain[q] - half) / (gain[q] - gain[q + 1]);
+    if (!below || !above) continue;
+    // The peak's own frequency from a parabola through it and its neighbours.
+    const double a = gain[peak - 1], b = gain[peak], c = gain[peak + 1];
+    const double offset = (a - 2.0 * b + c) < 0.0 ? 0.5 * (a - c) / (a - 2.0 * b + c) : 0.0;
+    AirResonance found;
+    found.frequency = (static_cast<double>(peak) + offset) * binSpacing_;
+    found.decayRate = std::numbers::pi * (*above - *below) * binSpacing_;  // half-width in rad/s
+    found.gain = gain[peak];
+    peaks.push_back({found, *below, *above});
+  }
+  std::stable_sort(peaks.begin(), peaks.end(),
+                   [](const Peak& x, const Peak& y) { return x.resonance.gain > y.resonance.gain; });
+  std::vector<AirResonance> taken;
+  std::vector<const Peak*> kept;
+  for (const Peak& p : peaks) {
+    if (kept.size() == kMaxResonances) break;
+    const bool overlaps = std::any_of(kept.begin(), kept.end(), [&](const Peak* k) {
+      return p.below < k->above && p.above > k->below;
+    });
+    if (overlaps) continue;
+    kept.push_back(&p);
+    taken.push_back(p.resonance);
+  }
+  return taken;
+}
+
 std::size_t WaveAirField::bytes() const {
   std::size_t total = sizeof(*this) + grid_.phi.size() * sizeof(float) + grid_.cellOpen.size() * sizeof(float) +
                       probePoint_.size() * sizeof(Vec3) + probeOfCell_.size() * 2 * sizeof(std::size_t);

@@ -43,6 +43,22 @@ WaterGrid mergedGrid(const WaterGrid& grid, int factor);
 ///        reaching the sides), or nothing when the sides differ.
 std::optional<double> groundPlaneHeight(const WaterGrid& grid);
 
+/// The strongest resonance of the air over the liquid (a vessel's air column), as the listener
+/// drives it: a Lorentzian peak of p_L at the surface over the rigid-surface field.
+struct AirResonance {
+  double frequency = 0.0;  ///< Ω/2π [Hz]
+  double decayRate = 0.0;  ///< β_r [1/s]: the half-power half-width, in rad/s
+  double gain = 0.0;       ///< the peak's largest |p_L| over the rigid-surface field's [-]
+};
+
+/// Resonances weaker than this gain over the rigid-surface field are not taken as one.
+inline constexpr double kMinResonanceGain = 3.0;
+/// At most this many resonances are taken, the strongest (a glass's quarter wave and its odd
+/// overtones, 3/4 and 5/4 of a wave, lie below 4 kHz while its column is longer than 6 cm).
+inline constexpr std::size_t kMaxResonances = 4;
+/// Where the air's resonance is looked for [Hz]: a vessel's air column (a glass: 0.3–3 kHz).
+inline constexpr double kResonanceLowHz = 200.0, kResonanceHighHz = 4000.0;
+
 /// One frame's air side for one listener.
 class WaveAirField {
  public:
@@ -58,6 +74,12 @@ class WaveAirField {
   std::optional<std::complex<double>> at(const Vec3& x, double angularFrequency) const;
   /// Memory the field holds [bytes]: its spectra and grid.
   std::size_t bytes() const;
+  /// @brief The peaks between kResonanceLowHz and kResonanceHighHz (or the solve's limit) of
+  ///        the largest over the probes of |p_L| ÷ |2 × the free field| (the rigid-surface
+  ///        field): each a local maximum of at least kMinResonanceGain whose half-power points
+  ///        are both found and whose half-power band does not overlap a stronger one's; the
+  ///        kMaxResonances strongest, strongest first.
+  std::vector<AirResonance> resonances() const;
 
  private:
   WaterGrid grid_;  ///< the merged air grid (φ, faces), for locating points

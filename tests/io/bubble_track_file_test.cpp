@@ -277,7 +277,7 @@ TEST(BubbleTrackFile, UnknownKeySuggestsTheClosestKnownKey) {
   json document = designExample();
   document["bubbles"][0]["radus"] = 0.001;
   expectError(parseError(document.dump()), "bubbles[0].radus",
-              "one of radius, birth, amplitude, track (did you mean 'radius'?)");
+              "one of radius, birth, amplitude, rings, track (did you mean 'radius'?)");
 }
 
 TEST(BubbleTrackFile, UnknownCamelCaseKeySuggestsTheSnakeCaseKey) {
