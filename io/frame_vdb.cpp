@@ -40,7 +40,7 @@ class ParticleList {
 
 void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& grid,
                    const sim::Particles& particles, const sim::MacVelocity& velocity,
-                   const SurfaceSettings& surface) {
+                   const SurfaceSettings& surface, const FrameStamp& stamp) {
   openvdb::initialize();  // registers OpenVDB's types; repeated calls do nothing
   const double h = grid.cellSize;
   // Voxel centres coincide with the solver's cell centres.
@@ -91,7 +91,15 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
   AtomicFile out(replace ? path : std::filesystem::temp_directory_path() / "fluidsound-frame.vdb");
   try {
     openvdb::io::File file(out.temporaryPath().string());
-    file.write({level, cellVelocity});
+    level->setCreator(stamp.creator);
+    cellVelocity->setCreator(stamp.creator);
+    openvdb::MetaMap meta;
+    meta.insertMeta("fps", openvdb::DoubleMetadata(stamp.fps));
+    meta.insertMeta("frame", openvdb::Int32Metadata(stamp.frame));
+    meta.insertMeta("time", openvdb::DoubleMetadata(stamp.time));
+    meta.insertMeta("units", openvdb::StringMetadata("m"));
+    meta.insertMeta("up_axis", openvdb::StringMetadata("y"));
+    file.write({level, cellVelocity}, meta);
     file.close();
   } catch (const openvdb::Exception& e) {
     throw OutputError(path.string() + ": cannot write the VDB file: " + e.what());

@@ -72,10 +72,11 @@ void prepareFrameFolder(const std::filesystem::path& out, const FrameRange& rang
   clearOtherRunsFrames(frames, range, ply, quiet);
 }
 
-FrameWriter::FrameWriter(std::filesystem::path frames, bool ply, int last, bool quiet)
+FrameWriter::FrameWriter(std::filesystem::path frames, bool ply, int last, double fps, bool quiet)
     : frames_(std::move(frames)),
       ply_(ply),
       last_(last),
+      fps_(fps),
       progress_("simulate", last + 1, "frames", quiet) {}
 
 void FrameWriter::onFrame(const sim::FrameView& state, const sim::FrameRecord& record) {
@@ -83,7 +84,8 @@ void FrameWriter::onFrame(const sim::FrameView& state, const sim::FrameRecord& r
   if (state.kept) {
     try {  // a frame for a FIFO waits for its reader, until a signal
       io::writeFrameVdb(frames_ / io::frameFileName(record.frame, "vdb"), state.grid,
-                        state.particles, state.velocity, {state.particleRadius});
+                        state.particles, state.velocity, {state.particleRadius},
+                        {record.frame, record.time, fps_, std::string("fluidsound ") + FLUIDSOUND_VERSION});
       if (ply_)
         io::writeParticlesPly(frames_ / io::frameFileName(record.frame, "ply"), state.particles);
     } catch (const io::Interrupted& signal) {

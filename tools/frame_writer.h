@@ -34,7 +34,8 @@ void prepareFrameFolder(const std::filesystem::path& out, const FrameRange& rang
 /// The simulation's observer for the CLI; a signal (io/interruption.h) interrupts the simulation.
 class FrameWriter : public sim::SimulationObserver {
  public:
-  FrameWriter(std::filesystem::path frames, bool ply, int last, bool quiet);
+  /// @param fps  the scene's frame rate, written into each frame's metadata
+  FrameWriter(std::filesystem::path frames, bool ply, int last, double fps, bool quiet);
 
   void onFrame(const sim::FrameView& state, const sim::FrameRecord& record) override;
   void progress(double fraction) override { progress_.update(fraction); }
@@ -47,6 +48,7 @@ class FrameWriter : public sim::SimulationObserver {
   std::filesystem::path frames_;
   bool ply_;
   int last_;
+  double fps_;
   ProgressDisplay progress_;
   std::optional<std::pair<int, io::Interrupted>> unwritten_;
 };

@@ -79,7 +79,7 @@ SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
   const std::filesystem::path out = o.output;
   prepareFrameFolder(out, range, o.ply, o.common.quiet);
 
-  FrameWriter writer(out / "frames", o.ply, range.last, o.common.quiet);
+  FrameWriter writer(out / "frames", o.ply, range.last, scene.time.fps, o.common.quiet);
   sim::SimulationResult result = simulateScene(scene, o.scene, range, writer);
   writer.finish();
   const std::optional<io::Interrupted> interrupted = stopOf(writer, result);

@@ -58,8 +58,31 @@ TEST(FrameFiles, VdbHoldsSurfaceAndVelocityGrids) {
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"0000.vdb"}) << "no temporary left";
 }
 
-// DESIGN.md: frames/NNNN.ply is binary little-endian, one vertex per particle, float x y z vx vy vz.
-TEST(FrameFiles, PlyHoldsEveryParticle) {
+// Issue 21: a frame says which it is, as Houdini and Blender show a file's metadata: fps, frame,
+// time, units, up axis, and each grid's creator.
+TEST(FrameFiles, VdbNamesItsFrameRateTimeUnitsAndCreator) {
+  TempFolder folder;
+  const sim::FluidSolver solver = layer();
+  const auto path = folder.path() / "0012.vdb";
+  writeFrameVdb(path, solver.grid(), solver.particles(), solver.velocity(), {solver.particleRadius()},
+                {12, 0.5, 24.0, "fluidsound 9.9"});
+  openvdb::initialize();
+  openvdb::io::File file(path.string());
+  file.open();
+  const openvdb::MetaMap::Ptr meta = file.getMetadata();
+  const openvdb::GridBase::Ptr surface = file.readGrid("surface");
+  file.close();
+  EXPECT_EQ(meta->metaValue<double>("fps"), 24.0);
+  EXPECT_EQ(meta->metaValue<int32_t>("frame"), 12);
+  EXPECT_EQ(meta->metaValue<double>("time"), 0.5);
+  EXPECT_EQ(meta->metaValue<std::string>("units"), "m");
+  EXPECT_EQ(meta->metaValue<std::string>("up_axis"), "y");
+  EXPECT_EQ(surface->getCreator(), "fluidsound 9.9");
+}
+
+// DESIGN.md: frames/NNNN.ply is binary little-endian, one vertex per particle, float x y z vx vy vz
+// and uint id, the particle's stable id (issue 21: a cache reader follows particles by it).
+TEST(FrameFiles, PlyHoldsEveryParticleWithItsId) {
   TempFolder folder;
   const sim::FluidSolver solver = layer();
   const auto path = folder.path() / "0000.ply";
@@ -70,13 +93,19 @@ TEST(FrameFiles, PlyHoldsEveryParticle) {
   EXPECT_NE(header.find("format binary_little_endian 1.0"), std::string::npos);
   EXPECT_NE(header.find("element vertex " + std::to_string(solver.particles().size())), std::string::npos);
   EXPECT_NE(header.find("property float x\nproperty float y\nproperty float z\nproperty float vx\n"
-                        "property float vy\nproperty float vz\n"),
+                        "property float vy\nproperty float vz\nproperty uint id\n"),
             std::string::npos);
-  std::vector<float> data(solver.particles().size() * 6);
-  in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size() * sizeof(float)));
+  struct Vertex {
+    float x, y, z, vx, vy, vz;
+    std::uint32_t id;
+  };
+  static_assert(sizeof(Vertex) == 28);
+  std::vector<Vertex> data(solver.particles().size());
+  in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size() * sizeof(Vertex)));
   ASSERT_TRUE(in);
   EXPECT_EQ(in.peek(), std::char_traits<char>::eof());
-  EXPECT_EQ(data[6 * 7 + 1], solver.particles().position[7][1]);
+  EXPECT_EQ(data[7].y, solver.particles().position[7][1]);
+  for (std::size_t p = 0; p < data.size(); ++p) ASSERT_EQ(data[p].id, solver.particles().id[p]) << p;
 }
 
 }  // namespace

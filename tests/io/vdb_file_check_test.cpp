@@ -23,8 +23,13 @@ namespace fluidsound::io {
 namespace {
 
 // The layout of a frame written by writeFrameVdb (OpenVDB 10, file format 224): the first grid
-// descriptor starts after the 57-byte header and the empty file metadata (4) and grid count (4).
-constexpr std::size_t kFirstDescriptor = 65;
+// descriptor starts after the 57-byte header, the file metadata (fps, frame, time, units, up_axis)
+// and the grid count (4), with the length of its name "surface": found, not counted.
+std::size_t firstDescriptor(const std::string& bytes) {
+  const std::size_t at = bytes.find(std::string("\x07\0\0\0surface", 11));
+  EXPECT_NE(at, std::string::npos);
+  return at;
+}
 
 /// The bytes of frames/0000.vdb of a resting layer half the height of a box `cells` cells of
 /// 1 cm wide (4: 8 leaves in the grid; 10: enough for blosc to compress the delayed-load table).
@@ -101,8 +106,8 @@ TEST(VdbFileCheck, RefusesGridOffsetsOutOfOrder) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
   const std::size_t offsets =
-      kFirstDescriptor + 4 + 7 + 4 + 16 + 4;  // "surface", "Tree_float_5_4_3", ""
-  ASSERT_EQ(bytes.substr(kFirstDescriptor + 4, 7), "surface");
+      firstDescriptor(bytes) + 4 + 7 + 4 + 16 + 4;  // "surface", "Tree_float_5_4_3", ""
+  ASSERT_EQ(bytes.substr(firstDescriptor(bytes) + 4, 7), "surface");
   put<std::int64_t>(bytes, offsets + 16, 0);  // end offset
   const InputError error = frameError(folder, bytes);
   EXPECT_EQ(error.field(), "grid 0 offsets");
@@ -112,7 +117,7 @@ TEST(VdbFileCheck, RefusesGridOffsetsOutOfOrder) {
 TEST(VdbFileCheck, RefusesAStringLongerThanTheFile) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
-  put<std::uint32_t>(bytes, kFirstDescriptor, 0xfffffff0u);  // the first grid's name length
+  put<std::uint32_t>(bytes, firstDescriptor(bytes), 0xfffffff0u);  // the first grid's name length
   const InputError error = frameError(folder, bytes);
   EXPECT_EQ(error.field(), "grid 0 name");
   EXPECT_EQ(error.found(), "4294967280");
@@ -123,10 +128,10 @@ TEST(VdbFileCheck, RefusesAStringLongerThanTheFile) {
 TEST(VdbFileCheck, RefusesAGridCountBeyondTheFile) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
-  put<std::int32_t>(bytes, kFirstDescriptor - 4, 1 << 30);
+  put<std::int32_t>(bytes, firstDescriptor(bytes) - 4, 1 << 30);
   EXPECT_EQ(frameError(folder, bytes).field(), "grid count");
   ASSERT_GT(bytes.size(), 1025u * 36);
-  put<std::int32_t>(bytes, kFirstDescriptor - 4, 1025);
+  put<std::int32_t>(bytes, firstDescriptor(bytes) - 4, 1025);
   const InputError error = frameError(folder, bytes);
   EXPECT_EQ(error.field(), "grid count");
   EXPECT_EQ(error.expected(), "a grid count from 0 to 1024");
@@ -292,8 +297,8 @@ TEST(VdbFileCheck, RefusesAFixedSizeMetadataValueOfAnotherSize) {
 TEST(VdbFileCheck, RefusesATransformTypeBeyondAnyGrid) {
   test::TempFolder folder;
   std::string bytes = frameBytes(folder);
-  ASSERT_EQ(bytes.substr(kFirstDescriptor + 4, 7), "surface");
-  bytes[kFirstDescriptor + 10] = 'f';
+  ASSERT_EQ(bytes.substr(firstDescriptor(bytes) + 4, 7), "surface");
+  bytes[firstDescriptor(bytes) + 10] = 'f';
   const std::size_t map = bytes.find("UniformScaleTranslateMap");
   ASSERT_NE(map, std::string::npos);
   put<std::uint32_t>(bytes, map - 4, 0x7ffffff0u);
