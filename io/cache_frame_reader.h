@@ -1,0 +1,49 @@
+// io/cache_frame_reader.h — one frame of a liquid cache as fluidsound reads it (issue 21;
+// docs/import.md): the liquid's signed distance [m] and velocity [m/s] at points given in
+// fluidsound's frame (metres, y up), whatever the cache's units and up axis, read from the grids
+// checkCacheFrame found.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <memory>
+
+#include "io/cache_file.h"
+#include "io/cache_frame.h"
+#include "sim/core/vec3.h"
+
+namespace fluidsound::io {
+
+/// @brief A point or direction in fluidsound's frame (y up) from the cache's frame: y up as it is;
+///        z up (Blender) turned by −90° about x, (x, y, z) → (x, z, −y). Lengths are not scaled.
+Vec3 fromCacheAxes(const Vec3& v, UpAxis up);
+/// The inverse of fromCacheAxes.
+Vec3 toCacheAxes(const Vec3& v, UpAxis up);
+
+/// One checked frame, read in full.
+class CacheFrameReader {
+ public:
+  /// @brief Checks (checkCacheFrame) and reads the frame at `path`.
+  /// @throws InputError as checkCacheFrame
+  CacheFrameReader(const std::filesystem::path& path, const CacheGridNames& names, double metresPerUnit, UpAxis up);
+  ~CacheFrameReader();
+  CacheFrameReader(CacheFrameReader&&) noexcept;
+  CacheFrameReader& operator=(CacheFrameReader&&) noexcept;
+
+  /// φ [m] at x [m, y up], trilinear; negative in the liquid; ± the band's width outside it.
+  double phi(const Vec3& x) const;
+  /// The liquid's velocity [m/s, y up] at x [m, y up], trilinear.
+  Vec3 velocity(const Vec3& x) const;
+  /// The voxel's edge [m].
+  double voxelSize() const;
+  /// Bounds [m, y up] of the level set's active voxels (the liquid's narrow band): min, max corner.
+  std::array<Vec3, 2> bounds() const;
+
+ private:
+  struct Grids;
+  std::unique_ptr<Grids> grids_;
+  double scale_ = 1.0;  ///< metres per unit
+  UpAxis up_ = UpAxis::Y;
+};
+
+}  // namespace fluidsound::io
