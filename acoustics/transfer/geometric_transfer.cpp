@@ -14,10 +14,11 @@
 
 #include "acoustics/bubble/instantaneous_frequency.h"
 #include "acoustics/bubble/minnaert.h"
+#include "acoustics/transfer/air_column_rings.h"
+#include "acoustics/transfer/air_pressures.h"
 #include "acoustics/transfer/air_solves.h"
 #include "acoustics/transfer/chebyshev_bands.h"
 #include "acoustics/transfer/frame_samples.h"
-#include "acoustics/transfer/resonator_ring.h"
 #include "acoustics/transfer/rigid_surface_air_field.h"
 #include "acoustics/transfer/water_helmholtz.h"
 #include "acoustics/transfer/water_modes.h"
@@ -68,19 +69,6 @@ void checkOptions(const GeometricTransferOptions& o) {
   if (!(o.bandPhaseFactor > 0.0 && o.bandPhaseFactor <= 10.0))
     throw TransferInputError(TransferInput::Options, "transfer.band_phase_factor",
                              "a number in (0, 10]", std::to_string(o.bandPhaseFactor));
-}
-
-/// p_L at every air point of the frame for one listener and frequency: the air side's wave solve
-/// where it answers (`wave`, may be null), else the rigid-surface field.
-std::vector<Complex> airPressures(const WaterHelmholtz& water, const Vec3& listener, double omega,
-                                  const AirProperties& air, const WaveAirField* wave = nullptr) {
-  std::vector<Complex> p;
-  p.reserve(water.airPoints().size());
-  for (const AirPoint& point : water.airPoints()) {
-    const std::optional<Complex> solved = wave ? wave->at(point.position, omega) : std::nullopt;
-    p.push_back(solved ? *solved : rigidSurfaceAirPressure(point.position, listener, omega, air));
-  }
-  return p;
 }
 
 /// The flat-surface value for a sample the frame's liquid cells do not reach (a drop or a sheet
@@ -241,63 +229,6 @@ void adjointRoute(BubbleTrackSet& tracks, const std::vector<FrameSample>& sample
   }
 }
 
-/// The air column's ring (docs/transfer.md, "The air column's ring"): where a listener's air solve
-/// found a resonance, every bubble born in this frame gets the free ring its onset leaves there.
-/// The resonant part of each listener's transfer at Ω is one solve with p_L the wave field minus
-/// the rigid-surface field (the background a resonance sits on), read at every birth sample;
-/// R = β_r·T_res is the transfer's residue at the pole, and resonator_ring.h the ring.
-void airColumnRings(BubbleTrackSet& tracks, const FrameSamples& work, const WaterHelmholtz& water,
-                    const TransferSetup& setup, const FrameAirFields& air, GeometricTransferStats& stats) {
-  // The resonances of the listener whose solve found the strongest: the vessel's own, which
-  // every listener's solve drives (a hidden listener's more weakly).
-  std::vector<AirResonance> resonances;
-  for (const WaveAirField* field : air)
-    if (std::vector<AirResonance> r = field->resonances();
-        !r.empty() && (resonances.empty() || r.front().gain > resonances.front().gain))
-      resonances = std::move(r);
-  if (resonances.empty()) return;
-  std::vector<std::pair<std::size_t, PointSample>> births;  // bubble, its birth sample's stencil
-  for (const auto& [b, s] : work) {
-    if (s != 0) continue;
-    PointSample stencil = water.sampleAt(samplePosition(tracks, b, s));
-    if (!stencil.cells.empty()) births.emplace_back(b, std::move(stencil));
-  }
-  if (births.empty()) return;
-  std::vector<RingingBubble> ringing;
-  std::vector<double> bubbleOmega;
-  for (const auto& [b, stencil] : births) {
-    const BubbleTrack& bubble = tracks.bubbles[b];
-    ringing.push_back(ringingBubble(bubble, setup.liquid, setup.model));
-    const double pressure = ambientPressureAt(bubble.track.front().depth, setup.liquid, setup.model);
-    bubbleOmega.push_back(naturalAngularFrequency(bubble.radius, pressure, setup.liquid, setup.model));
-  }
-  for (const AirResonance& resonance : resonances) {
-    const double omega = 2.0 * std::numbers::pi * resonance.frequency, beta = resonance.decayRate;
-    const std::complex<double> pole(-beta, omega);
-    const std::unique_ptr<HelmholtzFactor> factor = water.factorise(omega);
-    ++stats.factorisations;
-    std::vector<ResonatorRing> rings(births.size(), ResonatorRing{resonance.frequency, beta, {}, {}});
-    for (std::size_t l = 0; l < setup.listeners.size(); ++l) {
-      const Vec3& x = setup.listeners[l].position;
-      std::vector<Complex> p = airPressures(water, x, omega, setup.air, air[l]);
-      const std::vector<Complex> background = airPressures(water, x, omega, setup.air);
-      for (std::size_t a = 0; a < p.size(); ++a) p[a] -= background[a];
-      const Eigen::VectorXcd u = factor->solve(water.rightHandSide(p));
-      ++stats.solves;
-      for (std::size_t i = 0; i < births.size(); ++i) {
-        const Complex resonant =
-            water.evaluate(births[i].second, u, p) * 4.0 * std::numbers::pi / (omega * setup.liquid.density);
-        const Complex amplitude = ringAmplitude(beta * resonant, pole, bubbleOmega[i], ringing[i].deep.decayRate);
-        rings[i].gain.push_back(std::abs(amplitude));
-        rings[i].phase.push_back(std::arg(amplitude));
-      }
-    }
-    for (std::size_t i = 0; i < births.size(); ++i)
-      tracks.bubbles[births[i].first].rings.push_back(std::move(rings[i]));
-    stats.rings += births.size();
-  }
-}
-
 /// The spread [m] of path lengths from any listener to the frame's open surface: the air phase
 /// e^{−ik_a R} varies across the surface by k_a times it.
 double pathSpread(const WaterHelmholtz& water, const TransferSetup& setup) {
@@ -399,7 +330,7 @@ GeometricTransferStats transferOfFrame(BubbleTrackSet& tracks, int frame,
         ++stats.modeLimitedFrames;
       }
     }
-    if (!air.empty()) airColumnRings(tracks, work, water, setup, air, stats);
+    if (!air.empty()) addAirColumnRings(tracks, work, water, setup, air, stats);
     if (!airSamples.empty()) {
       adjointRoute(tracks, airSamples, water, modal ? &*modal : nullptr, setup, air, stats);
       stats.airSamples += airSamples.size();
