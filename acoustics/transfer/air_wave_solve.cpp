@@ -145,7 +145,6 @@ struct GaussianPulse {
 /// is minus the incident one, v_inc·e_a = (q(t_r)/(4πR²) + q̇(t_r)/(4πRc))·(x_f − x_L)_a/R.
 struct RigidFace {
   int axis;
-  std::size_t face;
   double rigid;  ///< 1 − open fraction
   std::size_t lo, hi;  ///< the cells below and above it along `axis`
   /// Per source (the listener, then its images): R [m] and (x_f − x_source)_a / R.
@@ -197,7 +196,7 @@ std::vector<RigidFace> rigidFaces(const AirGrid& g, const std::vector<Vec3>& sou
           std::array<double, 3> centre{i + 0.5, j + 0.5, k + 0.5};
           centre[a] -= 0.5;
           const Vec3 x = g.world(centre[0], centre[1], centre[2]);
-          RigidFace rf{a, face, 1.0 - g.open(a, face), g.cell(lo[0], lo[1], lo[2]), g.cell(i, j, k)};
+          RigidFace rf{a, 1.0 - g.open(a, face), g.cell(lo[0], lo[1], lo[2]), g.cell(i, j, k)};
           for (std::size_t s = 0; s < sources.size(); ++s) {
             const Vec3& y = sources[s];
             const double r = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
