@@ -27,7 +27,8 @@ struct CacheDescription {
   UpAxis up = UpAxis::Y;            ///< Houdini and fluidsound: y; Blender: z
   std::optional<std::string> particles;  ///< the particles' pattern (PLY or OpenVDB points), if any
   /// The sound part, read by the scene rules (docs/scene.md): solids, listeners, audio, bubbles,
-  /// transfer, seed. Its domain and time are placeholders until the frames are read.
+  /// transfer, seed. Its domain and time are stand-ins (a 1 m box, 1 s): the frames will give them
+  /// when the import stage reads them (issue 21, not built yet; docs/import.md).
   sim::Scene scene;
   bool defaultListener = true;      ///< no `listeners` given: one above the liquid, once it is known
 };
