@@ -26,6 +26,8 @@ SynthesisStageResult synthesize(const BubbleTrackSet& tracks, const SynthesisOpt
   const auto start = std::chrono::steady_clock::now();
   SynthesisStageResult result;
   result.settings = synthesisSettings(tracks, options);
+  if (!tracks.heads.empty() && options.headResponses == nullptr)  // before the render, not after
+    throw std::invalid_argument("synthesize: the tracks have heads but no head responses were given");
   observer.started(result.settings.duration.value_or(0.0));
   SynthesisResult rendered = synthesize(tracks, result.settings, [&observer](double fraction) {
     if (observer.wasInterrupted())
@@ -37,8 +39,6 @@ SynthesisStageResult synthesize(const BubbleTrackSet& tracks, const SynthesisOpt
   if (tracks.heads.empty()) {
     result.channels = std::move(rendered.channels);
   } else {
-    if (options.headResponses == nullptr)
-      throw std::invalid_argument("synthesize: the tracks have heads but no head responses were given");
     for (std::size_t l = 0; l < rendered.channels.size(); ++l) {
       const ListenerHead* head = l < tracks.listeners.size() ? tracks.head(tracks.listeners[l]) : nullptr;
       if (head == nullptr) {
