@@ -1,6 +1,9 @@
 // io/cache_file.cpp — see cache_file.h.
 #include "io/cache_file.h"
 
+#include <algorithm>
+#include <array>
+
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
@@ -31,6 +34,22 @@ std::vector<std::string> gridNames(const JsonValidator& check, const json& value
   return names;
 }
 
+/// `container.open`: face names, each once.
+std::array<bool, 6> containerOpenFaces(const JsonValidator& check, const json& value) {
+  constexpr std::array<std::string_view, 6> kFaces = {"-x", "+x", "-y", "+y", "-z", "+z"};
+  const std::string expected = R"(an array of face names from "-x", "+x", "-y", "+y", "-z", "+z", each once)";
+  if (!value.is_array()) check.fail("container.open", expected, describe(value));
+  std::array<bool, 6> open{};
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const auto face = value[i].is_string() ? std::find(kFaces.begin(), kFaces.end(), value[i].get<std::string>())
+                                           : kFaces.end();
+    if (face == kFaces.end() || open[face - kFaces.begin()])
+      check.fail(elementPath("container.open", i), expected, describe(value[i]));
+    open[face - kFaces.begin()] = true;
+  }
+  return open;
+}
+
 }  // namespace
 
 CacheDescription parseCacheFile(std::string_view text, const std::filesystem::path& file) {
@@ -38,7 +57,7 @@ CacheDescription parseCacheFile(std::string_view text, const std::filesystem::pa
   const json root = parseJson(text, name, DuplicateKeys::Rejected);
   const JsonValidator check(name, kCacheKeyRules);
   check.requireFormat(root, kFormatTag);
-  check.rejectUnknownKeys(root, "", {"format", "frames", "fps", "grids", "units", "particles", "solids",
+  check.rejectUnknownKeys(root, "", {"format", "frames", "fps", "grids", "units", "particles", "container", "solids",
                                      "listeners", "audio", "bubbles", "transfer", "seed"});
   CacheDescription cache;
   cache.file = file;
@@ -64,6 +83,17 @@ CacheDescription parseCacheFile(std::string_view text, const std::filesystem::pa
       if (axis != "y" && axis != "z") check.fail("units.up", R"("y" (Houdini, fluidsound) or "z" (Blender))", describe(*up));
       cache.up = axis == "z" ? UpAxis::Z : UpAxis::Y;
     }
+  }
+  if (const json* box = check.optionalObject(root, "", "container", "an object with min, max and open")) {
+    check.rejectUnknownKeys(*box, "container", {"min", "max", "open"});
+    Container c;
+    c.min = check.requiredVector(*box, "container", "min", "metres");
+    c.max = check.requiredVector(*box, "container", "max", "metres");
+    for (int a = 0; a < 3; ++a)
+      if (!(c.max[a] > c.min[a]))
+        check.fail("container.max", "a corner above container.min on every axis", describe((*box)["max"]));
+    if (const json* open = findMember(*box, "open")) c.open = containerOpenFaces(check, *open);
+    cache.container = c;
   }
   if (const json* particles = findMember(root, "particles"))
     cache.particles = check.nonEmptyText(*particles, "particles", "a particle file pattern (PLY or OpenVDB points; string)");

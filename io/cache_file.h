@@ -4,6 +4,7 @@
 // (solids, listeners, audio, bubbles, transfer), read and validated like a scene.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -17,6 +18,14 @@ namespace fluidsound::io {
 /// The axis that points up in a cache's frames.
 enum class UpAxis { Y, Z };
 
+/// The box a cache's liquid was simulated in (Houdini's FLIP container, Blender's fluid domain,
+/// `fluidsound simulate`'s domain), in fluidsound's frame [m, y up]: the import's grid ends at it
+/// and its closed faces are walls, as the solver's domain is.
+struct Container {
+  Vec3 min{}, max{};
+  std::array<bool, 6> open{};  ///< −x, +x, −y, +y, −z, +z
+};
+
 /// A parsed cache file.
 struct CacheDescription {
   std::filesystem::path file;       ///< the cache file (for messages); paths inside are relative to its folder
@@ -26,6 +35,7 @@ struct CacheDescription {
   double metresPerUnit = 1.0;       ///< the frames' length unit [m] (0.01 for centimetres)
   UpAxis up = UpAxis::Y;            ///< Houdini and fluidsound: y; Blender: z
   std::optional<std::string> particles;  ///< the particles' pattern (PLY or OpenVDB points), if any
+  std::optional<Container> container;    ///< none: the frames' liquid bounds the grid, no walls
   /// The sound part, read by the scene rules (docs/scene.md): solids, listeners, audio, bubbles,
   /// transfer, seed. Its domain and time are stand-ins (a 1 m box, 1 s): the frames will give them
   /// when the import stage reads them (issue 21, not built yet; docs/import.md).

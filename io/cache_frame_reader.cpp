@@ -2,11 +2,14 @@
 #include "io/cache_frame_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "io/input_error.h"
 
@@ -15,6 +18,57 @@ namespace fluidsound::io {
 Vec3 fromCacheAxes(const Vec3& v, UpAxis up) { return up == UpAxis::Y ? v : Vec3{v[0], v[2], -v[1]}; }
 
 Vec3 toCacheAxes(const Vec3& v, UpAxis up) { return up == UpAxis::Y ? v : Vec3{v[0], -v[2], v[1]}; }
+
+namespace {
+
+/// The world box [m, y up] of index box `box` of `transform`, in the cache's units `scale`.
+std::array<Vec3, 2> worldBounds(const openvdb::CoordBBox& box, const openvdb::math::Transform& transform,
+                                double scale, UpAxis up) {
+  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  Vec3 hi{-lo[0], -lo[1], -lo[2]};
+  for (int corner = 0; corner < 8; ++corner) {
+    const openvdb::Coord ijk((corner & 1 ? box.max() : box.min()).x(), (corner & 2 ? box.max() : box.min()).y(),
+                             (corner & 4 ? box.max() : box.min()).z());
+    const openvdb::Vec3d w = transform.indexToWorld(ijk);
+    const Vec3 p = fromCacheAxes({scale * w[0], scale * w[1], scale * w[2]}, up);
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  }
+  return {lo, hi};
+}
+
+/// Calls sample(i, j, k, worldPoint) for every (i, j, k) < size, k-slabs in parallel.
+template <class Sample>
+void forEachPoint(const sim::Index3& size, const sim::GridGeometry& grid, const Vec3& offsetCells, Sample sample) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, size[2]), [&](const tbb::blocked_range<int>& r) {
+    auto local = sample;  // one accessor per task
+    for (int k = r.begin(); k < r.end(); ++k)
+      for (int j = 0; j < size[1]; ++j)
+        for (int i = 0; i < size[0]; ++i)
+          local(i, j, k, grid.worldFromGrid({i + offsetCells[0], j + offsetCells[1], k + offsetCells[2]}));
+  });
+}
+
+}  // namespace
+
+CacheFrameExtent cacheFrameExtent(const std::filesystem::path& path, const CacheGridNames& names,
+                                  double metresPerUnit, UpAxis up) {
+  const CacheFrameGrids found = checkCacheFrame(path, names);
+  openvdb::io::File file(path.string());
+  file.open(/*delayLoad=*/true);
+  openvdb::GridBase::Ptr surface = file.readGridMetadata(found.surface);
+  openvdb::CoordBBox box;
+  const auto lo = surface->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
+  const auto hi = surface->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
+  if (lo && hi) {
+    box = openvdb::CoordBBox(openvdb::Coord(lo->value()), openvdb::Coord(hi->value()));
+  } else {
+    surface = file.readGrid(found.surface);
+    box = surface->evalActiveVoxelBoundingBox();
+  }
+  file.close();
+  if (box.empty()) return {std::nullopt, metresPerUnit * found.voxelSize};
+  return {worldBounds(box, surface->transform(), metresPerUnit, up), metresPerUnit * found.voxelSize};
+}
 
 struct CacheFrameReader::Grids {
   openvdb::FloatGrid::Ptr surface;
@@ -36,6 +90,7 @@ CacheFrameReader::CacheFrameReader(const std::filesystem::path& path, const Cach
     const auto twice = openvdb::gridPtrCast<openvdb::Vec3DGrid>(velocity);
     grids_->velocity = openvdb::Vec3SGrid::create(openvdb::Vec3s(twice->background()));
     grids_->velocity->setTransform(twice->transform().copy());
+    grids_->velocity->setGridClass(twice->getGridClass());
     auto out = grids_->velocity->getAccessor();
     for (auto it = twice->cbeginValueOn(); it; ++it) out.setValue(it.getCoord(), openvdb::Vec3s(*it));
   }
@@ -53,25 +108,86 @@ double CacheFrameReader::phi(const Vec3& x) const {
 
 Vec3 CacheFrameReader::velocity(const Vec3& x) const {
   const Vec3 c = toCacheAxes(x, up_);
-  const openvdb::tools::GridSampler<openvdb::Vec3SGrid, openvdb::tools::BoxSampler> sample(*grids_->velocity);
-  const openvdb::Vec3s v = sample.wsSample(openvdb::Vec3d(c[0] / scale_, c[1] / scale_, c[2] / scale_));
+  const openvdb::Vec3SGrid& field = *grids_->velocity;
+  const openvdb::Vec3d index = field.worldToIndex(openvdb::Vec3d(c[0] / scale_, c[1] / scale_, c[2] / scale_));
+  openvdb::Vec3s v(0.0f);
+  // A staggered grid (Houdini's FLIP `vel`, fluidsound's `velocity`) holds each component on the
+  // voxel's low face.
+  if (field.getGridClass() == openvdb::GRID_STAGGERED)
+    openvdb::tools::StaggeredBoxSampler::sample(field.getConstAccessor(), index, v);
+  else
+    openvdb::tools::BoxSampler::sample(field.getConstAccessor(), index, v);
   return fromCacheAxes({scale_ * v[0], scale_ * v[1], scale_ * v[2]}, up_);
 }
 
 double CacheFrameReader::voxelSize() const { return scale_ * grids_->surface->voxelSize()[0]; }
 
 std::array<Vec3, 2> CacheFrameReader::bounds() const {
-  const openvdb::CoordBBox box = grids_->surface->evalActiveVoxelBoundingBox();
-  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-  Vec3 hi{-lo[0], -lo[1], -lo[2]};
-  for (int corner = 0; corner < 8; ++corner) {
-    const openvdb::Coord ijk((corner & 1 ? box.max() : box.min()).x(), (corner & 2 ? box.max() : box.min()).y(),
-                             (corner & 4 ? box.max() : box.min()).z());
-    const openvdb::Vec3d w = grids_->surface->indexToWorld(ijk);
-    const Vec3 p = fromCacheAxes({scale_ * w[0], scale_ * w[1], scale_ * w[2]}, up_);
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-  }
-  return {lo, hi};
+  return worldBounds(grids_->surface->evalActiveVoxelBoundingBox(), grids_->surface->transform(), scale_, up_);
 }
+
+sim::Array3f CacheFrameReader::cellCentrePhi(const sim::GridGeometry& grid) const {
+  sim::Array3f phi(grid.cells);
+  const openvdb::FloatGrid& surface = *grids_->surface;
+  struct Sampler {
+    openvdb::FloatGrid::ConstAccessor accessor;
+    const openvdb::FloatGrid* grid;
+    sim::Array3f* out;
+    double scale;
+    UpAxis up;
+    void operator()(int i, int j, int k, const Vec3& x) {
+      const Vec3 c = toCacheAxes(x, up);
+      const openvdb::Vec3d index = grid->worldToIndex(openvdb::Vec3d(c[0] / scale, c[1] / scale, c[2] / scale));
+      float value = 0.0f;
+      openvdb::tools::BoxSampler::sample(accessor, index, value);
+      (*out)(i, j, k) = static_cast<float>(scale * value);
+    }
+  };
+  forEachPoint(grid.cells, grid, {0.5, 0.5, 0.5}, Sampler{surface.getConstAccessor(), &surface, &phi, scale_, up_});
+  return phi;
+}
+
+sim::MacVelocity CacheFrameReader::faceVelocity(const sim::GridGeometry& grid,
+                                                std::array<sim::Array3<std::uint8_t>, 3>* known) const {
+  sim::MacVelocity velocity(grid);
+  const openvdb::Vec3SGrid& field = *grids_->velocity;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (known) (*known)[axis] = sim::Array3<std::uint8_t>(grid.faceCount(axis), 0);
+    struct Sampler {
+      openvdb::Vec3SGrid::ConstAccessor accessor;
+      const openvdb::Vec3SGrid* grid;
+      sim::Array3f* out;
+      sim::Array3<std::uint8_t>* known;
+      int axis;
+      bool staggered;
+      double scale;
+      UpAxis up;
+      void operator()(int i, int j, int k, const Vec3& x) {
+        const Vec3 c = toCacheAxes(x, up);
+        const openvdb::Vec3d index = grid->worldToIndex(openvdb::Vec3d(c[0] / scale, c[1] / scale, c[2] / scale));
+        openvdb::Vec3s value(0.0f);
+        if (staggered) openvdb::tools::StaggeredBoxSampler::sample(accessor, index, value);
+        else openvdb::tools::BoxSampler::sample(accessor, index, value);
+        const Vec3 v = fromCacheAxes({scale * value[0], scale * value[1], scale * value[2]}, up);
+        (*out)(i, j, k) = static_cast<float>(v[axis]);
+        if (known) {  // every voxel of the interpolation's stencil holds a value of the cache's
+          const openvdb::Coord base(static_cast<int>(std::floor(index[0])), static_cast<int>(std::floor(index[1])),
+                                    static_cast<int>(std::floor(index[2])));
+          bool on = true;
+          for (int corner = 0; corner < 8 && on; ++corner)
+            on = accessor.isValueOn(base.offsetBy(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1));
+          (*known)(i, j, k) = on ? 1 : 0;
+        }
+      }
+    };
+    Vec3 offset{0.5, 0.5, 0.5};
+    offset[axis] = 0.0;
+    forEachPoint(grid.faceCount(axis), grid, offset,
+                 Sampler{field.getConstAccessor(), &field, &velocity[axis], known ? &(*known)[axis] : nullptr, axis,
+                         field.getGridClass() == openvdb::GRID_STAGGERED, scale_, up_});
+  }
+  return velocity;
+}
+
 
 }  // namespace fluidsound::io

@@ -5,12 +5,17 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "io/cache_file.h"
 #include "io/cache_frame.h"
 #include "sim/core/vec3.h"
+#include "sim/fluid/array3.h"
+#include "sim/fluid/grid.h"
+#include "sim/fluid/mac_velocity.h"
 
 namespace fluidsound::io {
 
@@ -19,6 +24,20 @@ namespace fluidsound::io {
 Vec3 fromCacheAxes(const Vec3& v, UpAxis up);
 /// The inverse of fromCacheAxes.
 Vec3 toCacheAxes(const Vec3& v, UpAxis up);
+
+/// Where a frame's liquid is and its voxel, in fluidsound's frame.
+struct CacheFrameExtent {
+  /// Min and max voxel centre [m, y up] of the level set's active voxels; none when it has none.
+  std::optional<std::array<Vec3, 2>> bounds;
+  double voxelSize = 0.0;      ///< [m]
+};
+
+/// @brief The extent of the level set of the frame at `path` (named as checkCacheFrame finds it)
+///        from the file's grid metadata (`file_bbox_min`/`max`, which OpenVDB writes with every
+///        grid) without reading its voxels; from the voxels when the metadata is absent.
+/// @throws InputError as checkCacheFrame's file and name checks
+CacheFrameExtent cacheFrameExtent(const std::filesystem::path& path, const CacheGridNames& names,
+                                  double metresPerUnit, UpAxis up);
 
 /// One checked frame, read in full.
 class CacheFrameReader {
@@ -34,6 +53,15 @@ class CacheFrameReader {
   double phi(const Vec3& x) const;
   /// The liquid's velocity [m/s, y up] at x [m, y up], trilinear.
   Vec3 velocity(const Vec3& x) const;
+  /// φ [m] at every cell centre of `grid` (trilinear; exact voxel values where the centres are
+  /// the voxels'), in parallel; the same values for any thread count.
+  sim::Array3f cellCentrePhi(const sim::GridGeometry& grid) const;
+  /// The velocity [m/s] on every face of `grid` (a MAC grid), trilinear from the velocity grid
+  /// (OpenVDB's staggered sampling for a staggered grid, as Houdini's FLIP `vel` and fluidsound's
+  /// `velocity` are); `known`, if given, marks the faces whose every stencil voxel holds a value
+  /// (a cache's velocity covers the liquid and a band, and is 0 beyond).
+  sim::MacVelocity faceVelocity(const sim::GridGeometry& grid,
+                                std::array<sim::Array3<std::uint8_t>, 3>* known = nullptr) const;
   /// The voxel's edge [m].
   double voxelSize() const;
   /// Bounds [m, y up] of the level set's active voxels (the liquid's narrow band): min, max corner.

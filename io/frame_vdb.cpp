@@ -3,6 +3,9 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetFilter.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
+#include <openvdb/tools/SignedFloodFill.h>
+
+#include <cmath>
 
 #include <fstream>
 #include <iterator>
@@ -10,6 +13,7 @@
 
 #include "io/atomic_file.h"
 #include "io/frame_files.h"
+#include "io/frame_points.h"
 #include "io/input_error.h"
 #include "io/output_file.h"
 
@@ -36,6 +40,99 @@ class ParticleList {
   double radius_;
 };
 
+
+/// Voxel centres on the solver's cell centres.
+openvdb::math::Transform::Ptr cellTransform(const sim::GridGeometry& grid) {
+  const double h = grid.cellSize;
+  const auto transform = openvdb::math::Transform::createLinearTransform(h);
+  transform->postTranslate(openvdb::Vec3d(grid.origin[0] + 0.5 * h, grid.origin[1] + 0.5 * h,
+                                          grid.origin[2] + 0.5 * h));
+  return transform;
+}
+
+/// The MAC velocity as a staggered grid (OpenVDB's GRID_STAGGERED, as Houdini's FLIP writes `vel`):
+/// voxel (i, j, k) holds the u, v, w of the faces on its low x, y and z sides, which are exactly the
+/// solver's faces (i, j, k). Written in every cell of the liquid and its band (the level set below
+/// its outside background: the interior's inactive tiles too) and in the cell above each of those
+/// on every axis (its low face is the liquid's high face), so a cache reader finds the liquid's
+/// velocity wherever a bubble can be.
+openvdb::Vec3fGrid::Ptr cellVelocityGrid(const openvdb::FloatGrid& level, const sim::GridGeometry& grid,
+                                         const sim::MacVelocity& velocity) {
+  openvdb::Vec3fGrid::Ptr faces = openvdb::Vec3fGrid::create();
+  faces->setTransform(level.transform().copy());
+  faces->setName("velocity");
+  faces->setGridClass(openvdb::GRID_STAGGERED);
+  faces->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
+  auto accessor = faces->getAccessor();
+  auto inside = level.getConstAccessor();
+  const float outside = level.background();
+  const auto liquid = [&](int i, int j, int k) {
+    return i >= 0 && j >= 0 && k >= 0 && i < grid.cells[0] && j < grid.cells[1] && k < grid.cells[2] &&
+           inside.getValue(openvdb::Coord(i, j, k)) < outside;
+  };
+  for (int k = 0; k <= grid.cells[2]; ++k)
+    for (int j = 0; j <= grid.cells[1]; ++j)
+      for (int i = 0; i <= grid.cells[0]; ++i) {
+        if (!(liquid(i, j, k) || liquid(i - 1, j, k) || liquid(i, j - 1, k) || liquid(i, j, k - 1))) continue;
+        const auto face = [&](int axis) {
+          const sim::Array3f& u = velocity[axis];
+          return u.contains(i, j, k) ? u(i, j, k) : 0.0f;
+        };
+        accessor.setValue(openvdb::Coord(i, j, k), openvdb::Vec3f(face(0), face(1), face(2)));
+      }
+  return faces;
+}
+
+/// A level set named `name` from φ at the cell centres [m]: the values within the band, ± the band
+/// beyond (signed flood fill).
+openvdb::FloatGrid::Ptr cellLevelSet(const sim::GridGeometry& grid, const sim::Array3f& phi, int halfWidthVoxels,
+                                     const std::string& name) {
+  openvdb::FloatGrid::Ptr level = openvdb::createLevelSet<openvdb::FloatGrid>(grid.cellSize, halfWidthVoxels);
+  level->setTransform(cellTransform(grid));
+  level->setName(name);
+  const float band = level->background();
+  auto accessor = level->getAccessor();
+  for (int k = 0; k < grid.cells[2]; ++k)
+    for (int j = 0; j < grid.cells[1]; ++j)
+      for (int i = 0; i < grid.cells[0]; ++i)
+        if (std::abs(phi(i, j, k)) < band) accessor.setValue(openvdb::Coord(i, j, k), phi(i, j, k));
+  openvdb::tools::signedFloodFill(level->tree());
+  return level;
+}
+
+/// Writes `grids` with the frame's metadata to `path` by the output rule.
+void writeFrameGrids(const std::filesystem::path& path, const openvdb::GridPtrVec& grids, const FrameStamp& stamp) {
+  // OpenVDB writes its file format only to a seekable file: a frame for a device or a FIFO is
+  // composed in a temporary of the system's temporary folder, then its bytes are written through.
+  const OutputTarget target = resolveOutput(path);
+  const bool replace = target.kind == OutputKind::Replace;
+  AtomicFile out(replace ? path : std::filesystem::temp_directory_path() / "fluidsound-frame.vdb");
+  try {
+    openvdb::io::File file(out.temporaryPath().string());
+    for (const openvdb::GridBase::Ptr& grid : grids) grid->setCreator(stamp.creator);
+    openvdb::MetaMap meta;
+    meta.insertMeta("fps", openvdb::DoubleMetadata(stamp.fps));
+    meta.insertMeta("frame", openvdb::Int32Metadata(stamp.frame));
+    meta.insertMeta("time", openvdb::DoubleMetadata(stamp.time));
+    meta.insertMeta("units", openvdb::StringMetadata("m"));
+    meta.insertMeta("up_axis", openvdb::StringMetadata("y"));
+    file.write(grids, meta);
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    throw OutputError(path.string() + ": cannot write the VDB file: " + e.what());
+  }
+  if (replace) {
+    out.commit();
+  } else {
+    std::ifstream composed(out.temporaryPath(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(composed)),
+                            std::istreambuf_iterator<char>());
+    if (!composed)
+      throw OutputError(path.string() + ": cannot write: the composed frame cannot be read back");
+    writeOutputFile(path, bytes);
+  }
+}
+
 }  // namespace
 
 void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& grid,
@@ -43,11 +140,7 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
                    const SurfaceSettings& surface, const FrameStamp& stamp) {
   openvdb::initialize();  // registers OpenVDB's types; repeated calls do nothing
   const double h = grid.cellSize;
-  // Voxel centres coincide with the solver's cell centres.
-  const auto transform = openvdb::math::Transform::createLinearTransform(h);
-  transform->postTranslate(openvdb::Vec3d(grid.origin[0] + 0.5 * h, grid.origin[1] + 0.5 * h,
-                                          grid.origin[2] + 0.5 * h));
-
+  const auto transform = cellTransform(grid);
   openvdb::FloatGrid::Ptr level = openvdb::createLevelSet<openvdb::FloatGrid>(h, surface.halfWidthVoxels);
   level->setTransform(transform);
   level->setName("surface");
@@ -66,54 +159,15 @@ void writeFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& g
   for (int i = 0; i < surface.smoothingIterations; ++i) filter.mean();
   constexpr double kLayerTopLiftCells = 0.2;
   filter.offset(static_cast<float>((kRasterRadiusFactor - 1.0) * surface.particleRadius - kLayerTopLiftCells * h));
+  writeFrameGrids(path, {level, cellVelocityGrid(*level, grid, velocity), particlePointGrid(particles, transform)},
+                  stamp);
+}
 
-  openvdb::Vec3fGrid::Ptr cellVelocity = openvdb::Vec3fGrid::create();
-  cellVelocity->setTransform(transform);
-  cellVelocity->setName("velocity");
-  cellVelocity->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
-  auto accessor = cellVelocity->getAccessor();
-  // Velocity where the level set has active voxels (the liquid and its band), averaged from faces.
-  for (auto it = level->cbeginValueOn(); it; ++it) {
-    const openvdb::Coord c = it.getCoord();
-    if (c.x() < 0 || c.y() < 0 || c.z() < 0 || c.x() >= grid.cells[0] || c.y() >= grid.cells[1] ||
-        c.z() >= grid.cells[2])
-      continue;
-    const openvdb::Vec3f v(0.5f * (velocity[0](c.x(), c.y(), c.z()) + velocity[0](c.x() + 1, c.y(), c.z())),
-                           0.5f * (velocity[1](c.x(), c.y(), c.z()) + velocity[1](c.x(), c.y() + 1, c.z())),
-                           0.5f * (velocity[2](c.x(), c.y(), c.z()) + velocity[2](c.x(), c.y(), c.z() + 1)));
-    accessor.setValue(c, v);
-  }
-
-  // OpenVDB writes its file format only to a seekable file: a frame for a device or a FIFO is
-  // composed in a temporary of the system's temporary folder, then its bytes are written through.
-  const OutputTarget target = resolveOutput(path);
-  const bool replace = target.kind == OutputKind::Replace;
-  AtomicFile out(replace ? path : std::filesystem::temp_directory_path() / "fluidsound-frame.vdb");
-  try {
-    openvdb::io::File file(out.temporaryPath().string());
-    level->setCreator(stamp.creator);
-    cellVelocity->setCreator(stamp.creator);
-    openvdb::MetaMap meta;
-    meta.insertMeta("fps", openvdb::DoubleMetadata(stamp.fps));
-    meta.insertMeta("frame", openvdb::Int32Metadata(stamp.frame));
-    meta.insertMeta("time", openvdb::DoubleMetadata(stamp.time));
-    meta.insertMeta("units", openvdb::StringMetadata("m"));
-    meta.insertMeta("up_axis", openvdb::StringMetadata("y"));
-    file.write({level, cellVelocity}, meta);
-    file.close();
-  } catch (const openvdb::Exception& e) {
-    throw OutputError(path.string() + ": cannot write the VDB file: " + e.what());
-  }
-  if (replace) {
-    out.commit();
-  } else {
-    std::ifstream composed(out.temporaryPath(), std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(composed)),
-                            std::istreambuf_iterator<char>());
-    if (!composed)
-      throw OutputError(path.string() + ": cannot write: the composed frame cannot be read back");
-    writeOutputFile(path, bytes);
-  }
+void writeLevelSetFrameVdb(const std::filesystem::path& path, const sim::GridGeometry& grid, const sim::Array3f& phi,
+                           const sim::MacVelocity& velocity, int halfWidthVoxels, const FrameStamp& stamp) {
+  openvdb::initialize();
+  const openvdb::FloatGrid::Ptr level = cellLevelSet(grid, phi, halfWidthVoxels, "surface");
+  writeFrameGrids(path, {level, cellVelocityGrid(*level, grid, velocity)}, stamp);
 }
 
 }  // namespace fluidsound::io

@@ -51,6 +51,8 @@ IO_RECORD_HEADERS = {
     "acoustics/transfer/geometric_transfer.h": "the limit of the scene's transfer.max_bands (kMaxTransferBands), checked as the block is read",
     "acoustics/analysis/spectrogram_power.h": "the pooled spectrogram record that spectrogram.png draws",
     "acoustics/binaural/hrir_table.h": "a head's impulse responses as a SOFA file holds them",
+    "sim/liquid_frame.h": "a liquid cache's frame as the bubble model reads it: io fills it from OpenVDB files",
+    "sim/cache_bubbles.h": "the frames of a liquid cache as the bubble model reads them: io implements its LiquidFrameSource",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')
 LINK_KEYWORDS = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE",
