@@ -11,6 +11,7 @@
 #include "io/input_error.h"
 #include "io/interruption.h"
 #include "sim/fluid/simulation_failure.h"
+#include "tools/from_cache_command.h"
 #include "tools/run_command.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
@@ -47,12 +48,14 @@ int main(int argc, char** argv) {
   SimulateOptions simulate;
   TransferOptions transfer;
   RunOptions run;
+  FromCacheOptions fromCache;
   CLI::App* synthCommand = addSynthCommand(app, synth);
   CLI::App* spectrogramCommand = addSpectrogramCommand(app, spectrogram);
   CLI::App* validateCommand = addValidateCommand(app, validate);
   CLI::App* simulateCommand = addSimulateCommand(app, simulate);
   CLI::App* transferCommand = addTransferCommand(app, transfer);
   CLI::App* runCommand = addRunCommand(app, run);
+  CLI::App* fromCacheCommand = addFromCacheCommand(app, fromCache);
 
   try {
     app.parse(argc, argv);
@@ -77,6 +80,8 @@ int main(int argc, char** argv) {
     if (simulateCommand->parsed())
       return runWithThreads(simulate.common.threads, [&] { return runSimulateCommand(simulate); });
     if (runCommand->parsed()) return runWithThreads(run.common.threads, [&] { return runRunCommand(run); });
+    if (fromCacheCommand->parsed())
+      return runWithThreads(fromCache.common.threads, [&] { return runFromCacheCommand(fromCache); });
     if (transferCommand->parsed())
       return runWithThreads(transfer.common.threads, [&] { return runTransferCommand(transfer); });
   } catch (const fluidsound::io::Interrupted& e) {
