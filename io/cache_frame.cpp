@@ -57,6 +57,24 @@ void requireFinite(const GridType& grid, const std::string& file, Finite finite)
 
 }  // namespace
 
+CacheFrameGrids findCacheFrameGrids(const std::filesystem::path& path, const CacheGridNames& names) {
+  openvdb::initialize();
+  const std::string file = path.string();
+  CacheFrameGrids found;
+  try {
+    openvdb::io::File vdb(file);
+    vdb.open(/*delayLoad=*/true);
+    std::vector<std::string> present;
+    for (auto it = vdb.beginName(); it != vdb.endName(); ++it) present.push_back(it.gridName());
+    vdb.close();
+    found.surface = findGrid(present, names.surface, file, "level set");
+    found.velocity = findGrid(present, names.velocity, file, "velocity");
+  } catch (const openvdb::Exception& e) {
+    throw InputError(file, "", "an OpenVDB file", std::string("an unreadable file (") + e.what() + ")");
+  }
+  return found;
+}
+
 CacheFrameGrids checkCacheFrame(const std::filesystem::path& path, const CacheGridNames& names) {
   openvdb::initialize();
   const std::string file = path.string();

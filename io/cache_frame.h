@@ -31,4 +31,9 @@ struct CacheFrameGrids {
 ///         infinite value (with its voxel)
 CacheFrameGrids checkCacheFrame(const std::filesystem::path& path, const CacheGridNames& names);
 
+/// @brief The names of the grids checkCacheFrame would use, from the file's grid list alone (for a
+///        frame already checked); voxelSize is left 0.
+/// @throws InputError as checkCacheFrame for a missing grid or an unreadable file
+CacheFrameGrids findCacheFrameGrids(const std::filesystem::path& path, const CacheGridNames& names);
+
 }  // namespace fluidsound::io

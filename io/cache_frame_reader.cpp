@@ -7,11 +7,13 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
+#include <openvdb/points/PointDataGrid.h>
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "io/input_error.h"
+#include "io/point_grid_particles.h"
 
 namespace fluidsound::io {
 
@@ -56,6 +58,9 @@ CacheFrameExtent cacheFrameExtent(const std::filesystem::path& path, const Cache
   openvdb::io::File file(path.string());
   file.open(/*delayLoad=*/true);
   openvdb::GridBase::Ptr surface = file.readGridMetadata(found.surface);
+  bool points = false;
+  for (auto name = file.beginName(); name != file.endName() && !points; ++name)
+    points = file.readGridMetadata(name.gridName())->isType<openvdb::points::PointDataGrid>();
   openvdb::CoordBBox box;
   const auto lo = surface->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
   const auto hi = surface->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
@@ -66,34 +71,55 @@ CacheFrameExtent cacheFrameExtent(const std::filesystem::path& path, const Cache
     box = surface->evalActiveVoxelBoundingBox();
   }
   file.close();
-  if (box.empty()) return {std::nullopt, metresPerUnit * found.voxelSize};
-  return {worldBounds(box, surface->transform(), metresPerUnit, up), metresPerUnit * found.voxelSize};
+  if (box.empty()) return {std::nullopt, metresPerUnit * found.voxelSize, points};
+  return {worldBounds(box, surface->transform(), metresPerUnit, up), metresPerUnit * found.voxelSize, points};
 }
 
 struct CacheFrameReader::Grids {
   openvdb::FloatGrid::Ptr surface;
   openvdb::Vec3SGrid::Ptr velocity;  // a double grid is read as floats
+  openvdb::points::PointDataGrid::Ptr points;  // with withPoints, if the file has one
 };
 
 CacheFrameReader::CacheFrameReader(const std::filesystem::path& path, const CacheGridNames& names,
                                    double metresPerUnit, UpAxis up)
-    : grids_(std::make_unique<Grids>()), scale_(metresPerUnit), up_(up) {
-  const CacheFrameGrids found = checkCacheFrame(path, names);
-  openvdb::io::File file(path.string());
-  file.open(/*delayLoad=*/false);
-  grids_->surface = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(found.surface));
-  const openvdb::GridBase::Ptr velocity = file.readGrid(found.velocity);
-  file.close();
+    : CacheFrameReader(path, checkCacheFrame(path, names), metresPerUnit, up, false) {}
+
+CacheFrameReader::CacheFrameReader(const std::filesystem::path& path, const CacheFrameGrids& checked,
+                                   double metresPerUnit, UpAxis up, bool withPoints)
+    : grids_(std::make_unique<Grids>()), path_(path), scale_(metresPerUnit), up_(up) {
+  openvdb::initialize();
+  openvdb::GridBase::Ptr velocity;
+  try {
+    openvdb::io::File file(path.string());
+    file.open(/*delayLoad=*/false);
+    grids_->surface = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(checked.surface));
+    velocity = file.readGrid(checked.velocity);
+    for (auto name = file.beginName(); withPoints && name != file.endName() && !grids_->points; ++name)
+      if (file.readGridMetadata(name.gridName())->isType<openvdb::points::PointDataGrid>())
+        grids_->points = openvdb::gridPtrCast<openvdb::points::PointDataGrid>(file.readGrid(name.gridName()));
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    throw InputError(path.string(), "", "an OpenVDB file", std::string("an unreadable file (") + e.what() + ")");
+  }
+  if (!grids_->surface) throw InputError(path.string(), checked.surface, "a FloatGrid (a level set)", "another type");
   if (auto single = openvdb::gridPtrCast<openvdb::Vec3SGrid>(velocity)) {
     grids_->velocity = single;
-  } else {  // checkCacheFrame allows Vec3 doubles: the same values as floats
-    const auto twice = openvdb::gridPtrCast<openvdb::Vec3DGrid>(velocity);
+  } else if (const auto twice = openvdb::gridPtrCast<openvdb::Vec3DGrid>(velocity)) {
+    // Vec3 doubles (checkCacheFrame allows them): the same values as floats
     grids_->velocity = openvdb::Vec3SGrid::create(openvdb::Vec3s(twice->background()));
     grids_->velocity->setTransform(twice->transform().copy());
     grids_->velocity->setGridClass(twice->getGridClass());
     auto out = grids_->velocity->getAccessor();
     for (auto it = twice->cbeginValueOn(); it; ++it) out.setValue(it.getCoord(), openvdb::Vec3s(*it));
+  } else {
+    throw InputError(path.string(), checked.velocity, "a Vec3 grid of floats or doubles", "another type");
   }
+}
+
+std::optional<sim::FrameParticles> CacheFrameReader::particles() const {
+  if (!grids_->points) return std::nullopt;
+  return pointGridParticles(*grids_->points, scale_, up_, path_.string());
 }
 
 CacheFrameReader::~CacheFrameReader() = default;

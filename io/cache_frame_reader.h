@@ -12,6 +12,7 @@
 
 #include "io/cache_file.h"
 #include "io/cache_frame.h"
+#include "sim/liquid_frame.h"
 #include "sim/core/vec3.h"
 #include "sim/fluid/array3.h"
 #include "sim/fluid/grid.h"
@@ -30,6 +31,7 @@ struct CacheFrameExtent {
   /// Min and max voxel centre [m, y up] of the level set's active voxels; none when it has none.
   std::optional<std::array<Vec3, 2>> bounds;
   double voxelSize = 0.0;      ///< [m]
+  bool hasPoints = false;      ///< the file holds a point grid (OpenVDB points)
 };
 
 /// @brief The extent of the level set of the frame at `path` (named as checkCacheFrame finds it)
@@ -45,6 +47,11 @@ class CacheFrameReader {
   /// @brief Checks (checkCacheFrame) and reads the frame at `path`.
   /// @throws InputError as checkCacheFrame
   CacheFrameReader(const std::filesystem::path& path, const CacheGridNames& names, double metresPerUnit, UpAxis up);
+  /// @brief Reads the frame at `path`, checked before (checkCacheFrame), through the grids `checked`
+  ///        names, and with `withPoints` its first point grid too (particles()).
+  /// @throws InputError for an unreadable file
+  CacheFrameReader(const std::filesystem::path& path, const CacheFrameGrids& checked, double metresPerUnit,
+                   UpAxis up, bool withPoints);
   ~CacheFrameReader();
   CacheFrameReader(CacheFrameReader&&) noexcept;
   CacheFrameReader& operator=(CacheFrameReader&&) noexcept;
@@ -62,6 +69,10 @@ class CacheFrameReader {
   /// (a cache's velocity covers the liquid and a band, and is 0 beyond).
   sim::MacVelocity faceVelocity(const sim::GridGeometry& grid,
                                 std::array<sim::Array3<std::uint8_t>, 3>* known = nullptr) const;
+  /// @brief The particles of the frame's first point grid (read with `withPoints`), in metres, y up;
+  ///        none when the file has no point grid.
+  /// @throws InputError as pointGridParticles (point_grid_particles.h)
+  std::optional<sim::FrameParticles> particles() const;
   /// The voxel's edge [m].
   double voxelSize() const;
   /// Bounds [m, y up] of the level set's active voxels (the liquid's narrow band): min, max corner.
@@ -70,6 +81,7 @@ class CacheFrameReader {
  private:
   struct Grids;
   std::unique_ptr<Grids> grids_;
+  std::filesystem::path path_;
   double scale_ = 1.0;  ///< metres per unit
   UpAxis up_ = UpAxis::Y;
 };

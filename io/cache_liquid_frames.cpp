@@ -13,11 +13,15 @@
 namespace fluidsound::io {
 
 sim::GridGeometry cacheGrid(const CacheDescription& cache, const std::vector<SequenceFrame>& frames) {
+  const bool framesHoldParticles = !cache.particles;
   Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
   Vec3 hi{-lo[0], -lo[1], -lo[2]};
   double voxel = 0.0;
   for (const SequenceFrame& f : frames) {
     const CacheFrameExtent extent = cacheFrameExtent(f.path, cache.grids, cache.metresPerUnit, cache.up);
+    if (framesHoldParticles && !extent.hasPoints)
+      throw InputError(f.path.string(), "", "the liquid's particles as a point grid (OpenVDB points with P, v, id)",
+                       "no point grid (a particle file pattern goes in the cache file's `particles`)");
     if (voxel == 0.0) voxel = extent.voxelSize;
     if (std::abs(extent.voxelSize - voxel) > 1e-6 * voxel) {
       std::ostringstream found;
@@ -53,13 +57,16 @@ CacheLiquidFrames::CacheLiquidFrames(const CacheDescription& cache, std::vector<
 
 sim::LiquidFrame CacheLiquidFrames::frame(int i) {
   const SequenceFrame& f = frames_.at(static_cast<std::size_t>(i));
-  const CacheFrameReader reader(f.path, cache_.grids, cache_.metresPerUnit, cache_.up);
+  // Every frame was checked by cacheGrid, before any output: read it once, its points with it.
+  const CacheFrameReader reader(f.path, findCacheFrameGrids(f.path, cache_.grids), cache_.metresPerUnit, cache_.up,
+                                particles_.empty());
   sim::LiquidFrame frame;
   frame.time = (f.frame - frames_.front().frame) / cache_.fps;
   frame.liquidDistance = reader.cellCentrePhi(grid_);
   frame.velocity = reader.faceVelocity(grid_, &frame.velocityKnown);
   const std::filesystem::path points = particles_.empty() ? f.path : particles_.at(static_cast<std::size_t>(i)).path;
-  std::optional<sim::FrameParticles> particles = readPointParticles(points, cache_.metresPerUnit, cache_.up);
+  std::optional<sim::FrameParticles> particles =
+      particles_.empty() ? reader.particles() : readPointParticles(points, cache_.metresPerUnit, cache_.up);
   if (!particles)
     throw InputError(points.string(), particles_.empty() ? "frames" : "particles",
                      "a point grid (OpenVDB points with P, v, id) holding the liquid's particles", "no point grid");

@@ -21,8 +21,9 @@ inline constexpr int kCacheGridMarginCells = 2;
 ///        container box from its min corner; without one, cell centres on the voxel centres,
 ///        covering the union of every frame's level-set extent (cacheFrameExtent) plus
 ///        kCacheGridMarginCells.
-/// @throws InputError naming the frame: a voxel size unlike the first frame's, or as
-///         cacheFrameExtent
+///        Every frame is checked here (checkCacheFrame), before any output is written.
+/// @throws InputError naming the frame: a voxel size unlike the first frame's, no point grid when
+///         the cache names no particle files, or as cacheFrameExtent
 sim::GridGeometry cacheGrid(const CacheDescription& cache, const std::vector<SequenceFrame>& frames);
 
 /// The frames of a cache, read one at a time (sim::LiquidFrameSource).

@@ -1,6 +1,8 @@
 // io/cache_particles.cpp — see cache_particles.h.
 #include "io/cache_particles.h"
 
+#include "io/point_grid_particles.h"
+
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/points/PointDataGrid.h>
@@ -58,9 +60,15 @@ std::optional<sim::FrameParticles> readPointParticles(const std::filesystem::pat
   }
   file.close();
   if (!grid) return std::nullopt;
-  const std::string file_ = path.string(), gridName = grid->getName();
-  const auto v = attribute(*grid, "v");
-  const auto id = attribute(*grid, "id");
+  return pointGridParticles(*grid, metresPerUnit, up, path.string());
+}
+
+sim::FrameParticles pointGridParticles(const PointDataGrid& grid, double metresPerUnit, UpAxis up,
+                                       const std::string& file) {
+  const std::string& file_ = file;
+  const std::string gridName = grid.getName();
+  const auto v = attribute(grid, "v");
+  const auto id = attribute(grid, "id");
   if (v && v->second != "vec3s" && v->second != "vec3d")
     throw InputError(file_, gridName + ".v", "a point velocity of 3 floats or doubles", "a " + v->second + " attribute");
   if (id && id->second != "int32" && id->second != "int64")
@@ -68,11 +76,11 @@ std::optional<sim::FrameParticles> readPointParticles(const std::filesystem::pat
 
   std::vector<openvdb::Vec3d> positions, velocities;
   std::vector<std::uint64_t> ids;
-  for (auto leaf = grid->constTree().cbeginLeaf(); leaf; ++leaf) {
+  for (auto leaf = grid.constTree().cbeginLeaf(); leaf; ++leaf) {
     const AttributeHandle<openvdb::Vec3f> offset(leaf->constAttributeArray("P"));
     for (auto index = leaf->beginIndexOn(); index; ++index) {
       const openvdb::Vec3d voxel = index.getCoord().asVec3d() + openvdb::Vec3d(offset.get(*index));
-      positions.push_back(grid->transform().indexToWorld(voxel));
+      positions.push_back(grid.transform().indexToWorld(voxel));
     }
     // Attribute arrays are per leaf, in the same order as the points the index walk visits when
     // every point is active (the grids caches hold); read them whole.

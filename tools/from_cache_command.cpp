@@ -98,15 +98,23 @@ class ImportObserver : public sim::CacheBubbleObserver {
       : frames_(std::move(frames)), grid_(grid), fps_(fps), progress_("bubbles", count, "frames", quiet) {}
   void onFrame(const sim::LiquidFrame& frame, const sim::CacheFrameRecord& record) override {
     const auto t0 = Clock::now();
-    io::writeLevelSetFrameVdb(frames_ / io::frameFileName(record.frame, "vdb"), grid_, frame.liquidDistance,
-                              frame.velocity, kFrameBandVoxels,
+    const std::filesystem::path path = frames_ / io::frameFileName(record.frame, "vdb");
+    io::writeLevelSetFrameVdb(path, grid_, frame.liquidDistance, frame.velocity, kFrameBandVoxels,
                               {record.frame, record.time, fps_, std::string("fluidsound ") + FLUIDSOUND_VERSION});
+    written.push_back(path);
     writeSeconds += secondsSince(t0);
   }
   void progress(double fraction) override { progress_.update(fraction); }
   bool wasInterrupted() override { return io::interruptionRequested(); }
   void finish() { progress_.finish(); }
+  /// Removes the frames this run wrote (after a bad frame: nothing half-written stays).
+  void removeWritten() {
+    std::error_code ignored;
+    for (const std::filesystem::path& path : written) std::filesystem::remove(path, ignored);
+    written.clear();
+  }
   double writeSeconds = 0.0;
+  std::vector<std::filesystem::path> written;
 
  private:
   std::filesystem::path frames_;
@@ -149,7 +157,9 @@ int runFromCacheCommand(const FromCacheOptions& o) {
   }
   if (frames.size() < 2)
     throw io::InputError(cache.file.string(), "frames", "a sequence of at least 2 frames", "1 frame");
-  const sim::GridGeometry grid = io::cacheGrid(cache, frames);
+  const auto checkStart = Clock::now();
+  const sim::GridGeometry grid = io::cacheGrid(cache, frames);  // checks every frame first
+  const double checkSeconds = secondsSince(checkStart);
   sim::Scene scene = sceneOfCache(cache, grid, static_cast<int>(frames.size()));
   requireMemoryForRender(scene, o.cache, physicalMemoryBytes());
   io::loadSceneMeshes(scene);
@@ -162,10 +172,23 @@ int runFromCacheCommand(const FromCacheOptions& o) {
   // The bubble model at the cache's rate, writing OUTDIR/frames as it reads.
   io::CacheLiquidFrames source(cache, frames, particles, grid);
   ImportObserver observer(out / "frames", grid, cache.fps, static_cast<int>(frames.size()), o.common.quiet);
-  const sim::CacheBubbleResult result = sim::cacheBubbles(source, grid, scene, {}, observer);
+  sim::CacheBubbleResult result;
+  try {
+    result = sim::cacheBubbles(source, grid, scene, {}, observer);
+  } catch (const io::InputError&) {  // a frame's particles: the frames were checked before
+    observer.finish();
+    observer.removeWritten();
+    throw;
+  }
   observer.finish();
-  if (result.interruptedAt)
-    throw io::Interrupted(io::interruptionSignal(), "from-cache frame " + std::to_string(*result.interruptedAt));
+  if (result.interruptedAt) {
+    RunReport report("from-cache");
+    report.setting("cache", o.cache);
+    report.markIncomplete("from-cache frame " + std::to_string(*result.interruptedAt));
+    report.write(out / "report.json");
+    throw io::Interrupted(io::interruptionSignal(), "from-cache frame " + std::to_string(*result.interruptedAt),
+                          (out / "report.json").string() + " marked incomplete");
+  }
   acoustics::BubbleTrackSet tracks = io::bubbleTracksFromHistories(result.bubbles, scene);
   io::writeBubbleTracks(out / "bubbles.json", tracks);
   const double bubbleStage = secondsSince(start);
@@ -194,6 +217,7 @@ int runFromCacheCommand(const FromCacheOptions& o) {
   report.setting("metres_per_unit", cache.metresPerUnit);
   report.setting("up", cache.up == io::UpAxis::Z ? "z" : "y");
   report.setting("cell_size", grid.cellSize);
+  report.stageSeconds("check", checkSeconds);
   report.stageSeconds("read", result.readSeconds);
   report.stageSeconds("bubbles", result.bubbleSeconds);
   report.stageSeconds("output", observer.writeSeconds);
