@@ -49,6 +49,9 @@ void constrainToSolids(MacVelocity& velocity, const SolidBoundary& solids) {
 constexpr std::size_t kFullCellParticles = 4;
 constexpr std::size_t kCrowdedCellParticles = 12;
 constexpr double kCrowdedCellDepth = 0.1;
+/// Cells around the particles' box whose surface value they may change: the kernel's reach (1.5
+/// cells, from the 3×3×3 cells around a centre) rounded up, plus one for a particle on a cell edge.
+constexpr int kSurfaceReachCells = 3;
 
 /// How far [cells] a particle of the next frame may lie from a particle's advected place and still
 /// be that particle: a splash moves a particle a cell or two off the grid's prediction in a frame
@@ -107,13 +110,40 @@ void blend(const Array3f& a, const Array3f& b, float alpha, Array3f& out) {
 /// distance with radius r [m], and a cell holding 1.5× the seeding density (8 per cell) liquid
 /// whatever the kernel says. Sorts `particles` by cell (the bubble model reads them in any order).
 void particleSurface(Particles& particles, const GridGeometry& grid, double radius, Array3f& phi) {
+  // Made on the part of the grid the particles reach (their box and the kernel's 2 cells around
+  // it, one more for rounding); air elsewhere, as the whole grid's pass would give: a pour fills a
+  // fraction of its domain.
+  phi = Array3f(grid.cells, static_cast<float>(radius * kParticleSurfaceFarFactor));
+  if (particles.size() == 0) return;
+  Index3 lo{grid.cells}, hi{-1, -1, -1};
+  for (const Vec3f& x : particles.position) {
+    const Vec3 g = grid.gridFromWorld({x[0], x[1], x[2]});
+    for (int a = 0; a < 3; ++a) {
+      const int c = static_cast<int>(std::floor(g[a]));
+      lo[a] = std::min(lo[a], c), hi[a] = std::max(hi[a], c);
+    }
+  }
+  GridGeometry part = grid;
+  Index3 first{};
+  for (int a = 0; a < 3; ++a) {
+    first[a] = std::clamp(lo[a] - kSurfaceReachCells, 0, grid.cells[a] - 1);
+    const int last = std::clamp(hi[a] + kSurfaceReachCells, 0, grid.cells[a] - 1);
+    if (last < first[a]) return;  // every particle outside the grid
+    part.cells[a] = last - first[a] + 1;
+    part.origin[a] = grid.origin[a] + first[a] * grid.cellSize;
+  }
   particles.affine.assign(particles.size(), {});
-  const CellIndex index = sortParticlesByCell(particles, grid);
-  phi = liquidDistanceFromParticles(particles, index, grid, radius, kFullCellParticles);
-  auto& value = phi.values();
+  const CellIndex index = sortParticlesByCell(particles, part);
+  const Array3f own = liquidDistanceFromParticles(particles, index, part, radius, kFullCellParticles);
   const auto inside = static_cast<float>(-kCrowdedCellDepth * grid.cellSize);
-  for (std::size_t c = 0; c < value.size(); ++c)
-    if (index.start[c + 1] - index.start[c] >= kCrowdedCellParticles) value[c] = std::min(value[c], inside);
+  for (int k = 0; k < part.cells[2]; ++k)
+    for (int j = 0; j < part.cells[1]; ++j)
+      for (int i = 0; i < part.cells[0]; ++i) {
+        const std::size_t c = own.offset(i, j, k);
+        float value = own(i, j, k);
+        if (index.start[c + 1] - index.start[c] >= kCrowdedCellParticles) value = std::min(value, inside);
+        phi(first[0] + i, first[1] + j, first[2] + k) = value;
+      }
 }
 
 /// The particles of one frame that are also in the next: index in each.

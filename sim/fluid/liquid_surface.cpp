@@ -15,9 +15,6 @@
 
 namespace fluidsound::sim {
 namespace {
-/// φ far from any particle, as a multiple of the kernel radius: only the sign and the values
-/// next to the surface matter to the ghost-fluid pressure solve.
-constexpr double kFarFactor = 1.0;
 constexpr double kKernelRadiusCells = 1.5;
 /// Cells of full neighbourhood (each axis) that make a cell interior: 1 would do for the kernel
 /// (its 3×3×3 cells), 2 keeps interior cells out of every interpolation that also touches a cell
@@ -79,7 +76,7 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
   // R = 1.5 h: the largest kernel the 3×3×3 cells around a cell centre contain; a smaller one
   // leaves dents where the jittered particles thin out.
   const double h = grid.cellSize, radius = kKernelRadiusCells * h, radius2 = radius * radius;
-  Array3f phi(grid.cells, static_cast<float>(radius * kFarFactor));
+  Array3f phi(grid.cells, static_cast<float>(radius * kParticleSurfaceFarFactor));
   const Array3<std::uint8_t> interior =
       interiorCount > 0 ? particleNeighbourhoods(index, grid.cells, interiorCount, kInteriorMarginCells)
                         : Array3<std::uint8_t>(grid.cells, 0);

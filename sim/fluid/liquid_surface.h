@@ -9,9 +9,13 @@
 
 namespace fluidsound::sim {
 
+/// φ where no particle is within the kernel's reach, in particle radii (liquidDistanceFromParticles):
+/// only the sign and the values next to the surface matter to the ghost-fluid pressure solve.
+inline constexpr double kParticleSurfaceFarFactor = 1.0;
+
 /// @brief φ(x) = |x − x̄(x)| − r, x̄ = Σ k_p x_p / Σ k_p, k_p = max(0, 1 − |x − x_p|²/R²)³,
 ///        R = 1.5 cells, over the particles of the 3×3×3 cells around x;
-///        negative inside the liquid [m]. Where no particle is within R, φ = R·kFarFactor.
+///        negative inside the liquid [m]. Where no particle is within R, φ = r·kParticleSurfaceFarFactor.
 ///        Deep inside — every cell within 2 cells (each axis) of x inside the grid and holding
 ///        at least `interiorCount` particles — φ = −r without the sum: in a uniform liquid the
 ///        kernel mean is within ~0.06 h of x there (tests/sim/fluid/particle_transfer_test.cpp), and
