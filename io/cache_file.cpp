@@ -96,7 +96,7 @@ CacheDescription parseCacheFile(std::string_view text, const std::filesystem::pa
     cache.container = c;
   }
   if (const json* particles = findMember(root, "particles"))
-    cache.particles = check.nonEmptyText(*particles, "particles", "a particle file pattern (PLY or OpenVDB points; string)");
+    cache.particles = check.nonEmptyText(*particles, "particles", "a particle file pattern (OpenVDB points files; string)");
 
   // The sound part, by the scene's own rules and messages: the same keys in a scene document whose
   // domain and time stand in until the frames give them.
