@@ -75,7 +75,7 @@ TEST(CacheFile, EachBadFieldIsNamedInTheCacheFile) {
   expectError(fps, "fps", "a number > 0 and <= 1000 (frames per second), found 0");
   json typo = minimum();
   typo["frame_rate"] = 30;
-  expectError(typo, "frame_rate", "one of format, frames, fps, grids, units, particles");
+  expectError(typo, "frame_rate", "one of format, frames, fps, grids, units, particles, container");
   json grid = minimum();
   grid["grids"] = {{"surface", 3}};
   expectError(grid, "grids.surface", "a grid name or an array of grid names");
@@ -95,6 +95,26 @@ TEST(CacheFile, EachBadFieldIsNamedInTheCacheFile) {
   json domain = minimum();
   domain["domain"] = json::object();  // the frames give the domain
   expectError(domain, "domain", "one of format, frames, fps");
+}
+
+// The container: the box and its open faces reach the record; a box with no volume, an unknown face
+// or one listed twice is named.
+TEST(CacheFile, TheContainerIsReadAndCheckedLikeADomain) {
+  json document = minimum();
+  document["container"] = json::parse(R"({"min": [0, 0, 0], "max": [0.5, 0.3, 0.1], "open": ["+y"]})");
+  const CacheDescription cache = parseCacheFile(document.dump(), "shots/cache.json");
+  ASSERT_TRUE(cache.container);
+  EXPECT_EQ(cache.container->max[1], 0.3);
+  EXPECT_EQ(cache.container->open, (std::array<bool, 6>{false, false, false, true, false, false}));
+  json flat = minimum();
+  flat["container"] = json::parse(R"({"min": [0, 0, 0], "max": [0.5, 0, 0.1]})");
+  expectError(flat, "container.max", "a corner above container.min on every axis");
+  json face = minimum();
+  face["container"] = json::parse(R"({"min": [0, 0, 0], "max": [1, 1, 1], "open": ["+y", "top"]})");
+  expectError(face, "container.open[1]", "an array of face names");
+  json twice = minimum();
+  twice["container"] = json::parse(R"({"min": [0, 0, 0], "max": [1, 1, 1], "open": ["+y", "+y"]})");
+  expectError(twice, "container.open[1]", "each once");
 }
 
 }  // namespace
