@@ -83,14 +83,10 @@ CacheFrameGrids checkCacheFrame(const std::filesystem::path& path, const CacheGr
     throw InputError(file, "", "an OpenVDB frame file", std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
   requireIntactVdbFile(path);  // OpenVDB trusts the lengths in the file (vdb_file_check.h)
   openvdb::GridBase::Ptr surfaceBase, velocityBase;
-  CacheFrameGrids found;
+  CacheFrameGrids found = findCacheFrameGrids(path, names);
   try {
     openvdb::io::File vdb(file);
     vdb.open(/*delayLoad=*/false);
-    std::vector<std::string> present;
-    for (auto it = vdb.beginName(); it != vdb.endName(); ++it) present.push_back(it.gridName());
-    found.surface = findGrid(present, names.surface, file, "level set");
-    found.velocity = findGrid(present, names.velocity, file, "velocity");
     surfaceBase = vdb.readGrid(found.surface);
     velocityBase = vdb.readGrid(found.velocity);
     vdb.close();

@@ -35,6 +35,13 @@ constexpr const char* kScene = R"({
 constexpr const char* kCache = R"({"format": "fluidsound.cache/1", "frames": "sim/frames/%04d.vdb", "fps": 30,
   "container": {"min": [0, 0, 0], "max": [0.24, 0.16, 0.04]}})";
 
+/// Simulates kScene into WORK/sim and writes WORK/cache.json (kCache) naming its frames.
+bool simulateCache(const fs::path& work) {
+  std::ofstream(work / "scene.json") << kScene;
+  std::ofstream(work / "cache.json") << kCache;
+  return runFluidsound({"simulate", (work / "scene.json").string(), "-o", (work / "sim").string(), "-q"}).exitCode == 0;
+}
+
 /// Reads every grid of a frame, lets `change` edit the list, writes it back.
 void rewriteFrame(const fs::path& path, const std::function<void(openvdb::GridPtrVec&)>& change) {
   openvdb::initialize();
@@ -64,9 +71,7 @@ class FromCacheErrors : public ::testing::TestWithParam<Broken> {};
 TEST_P(FromCacheErrors, OneLineExitThreeAndNothingWritten) {
   test::TempFolder folder;
   const fs::path work = folder.path();
-  std::ofstream(work / "scene.json") << kScene;
-  ASSERT_EQ(runFluidsound({"simulate", (work / "scene.json").string(), "-o", (work / "sim").string(), "-q"}).exitCode, 0);
-  std::ofstream(work / "cache.json") << kCache;
+  ASSERT_TRUE(simulateCache(work));
   GetParam().breakIt(work);
   const test::CommandOutcome outcome =
       runFluidsound({"from-cache", (work / "cache.json").string(), "-o", (work / "out").string(), "-q"});
@@ -141,9 +146,7 @@ INSTANTIATE_TEST_SUITE_P(BrokenCaches, FromCacheErrors, ::testing::ValuesIn(kBro
 TEST(FromCache, AGoodCacheRendersWhatRunWrites) {
   test::TempFolder folder;
   const fs::path work = folder.path();
-  std::ofstream(work / "scene.json") << kScene;
-  ASSERT_EQ(runFluidsound({"simulate", (work / "scene.json").string(), "-o", (work / "sim").string(), "-q"}).exitCode, 0);
-  std::ofstream(work / "cache.json") << kCache;
+  ASSERT_TRUE(simulateCache(work));
   const test::CommandOutcome outcome =
       runFluidsound({"from-cache", (work / "cache.json").string(), "-o", (work / "out").string(), "-q"});
   ASSERT_EQ(outcome.exitCode, 0) << outcome.err;
@@ -156,9 +159,7 @@ TEST(FromCache, AGoodCacheRendersWhatRunWrites) {
 TEST(FromCache, RefusesToWriteOverItsOwnFrames) {
   test::TempFolder folder;
   const fs::path work = folder.path();
-  std::ofstream(work / "scene.json") << kScene;
-  ASSERT_EQ(runFluidsound({"simulate", (work / "scene.json").string(), "-o", (work / "sim").string(), "-q"}).exitCode, 0);
-  std::ofstream(work / "cache.json") << kCache;
+  ASSERT_TRUE(simulateCache(work));
   const auto before = fs::last_write_time(work / "sim/frames/0001.vdb");
   const test::CommandOutcome outcome =
       runFluidsound({"from-cache", (work / "cache.json").string(), "-o", (work / "sim").string(), "-q"});
