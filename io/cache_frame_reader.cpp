@@ -23,6 +23,13 @@ Vec3 toCacheAxes(const Vec3& v, UpAxis up) { return up == UpAxis::Y ? v : Vec3{v
 
 namespace {
 
+/// Where x [m, y up] lies in `field`'s index space, the cache's axes and units being `up` and
+/// `scale` metres per unit.
+openvdb::Vec3d indexOf(const openvdb::GridBase& field, const Vec3& x, double scale, UpAxis up) {
+  const Vec3 c = toCacheAxes(x, up);
+  return field.worldToIndex(openvdb::Vec3d(c[0] / scale, c[1] / scale, c[2] / scale));
+}
+
 /// The world box [m, y up] of index box `box` of `transform`, in the cache's units `scale`.
 std::array<Vec3, 2> worldBounds(const openvdb::CoordBBox& box, const openvdb::math::Transform& transform,
                                 double scale, UpAxis up) {
@@ -62,8 +69,7 @@ std::optional<openvdb::Coord> alignedOffset(const openvdb::GridBase& field, cons
                            map->isType<openvdb::math::UniformScaleMap>()))
     return std::nullopt;
   if (std::abs(scale * field.voxelSize()[0] - grid.cellSize) > 1e-6 * grid.cellSize) return std::nullopt;
-  const Vec3 c = grid.cellCentre(0, 0, 0);
-  const openvdb::Vec3d o = field.worldToIndex(openvdb::Vec3d(c[0] / scale, c[1] / scale, c[2] / scale));
+  const openvdb::Vec3d o = indexOf(field, grid.cellCentre(0, 0, 0), scale, up);
   openvdb::Coord offset;
   for (int a = 0; a < 3; ++a) {
     offset[a] = static_cast<int>(std::lround(o[a]));
@@ -149,15 +155,15 @@ CacheFrameReader::CacheFrameReader(CacheFrameReader&&) noexcept = default;
 CacheFrameReader& CacheFrameReader::operator=(CacheFrameReader&&) noexcept = default;
 
 double CacheFrameReader::phi(const Vec3& x) const {
-  const Vec3 c = toCacheAxes(x, up_);
-  const openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sample(*grids_->surface);
-  return scale_ * static_cast<double>(sample.wsSample(openvdb::Vec3d(c[0] / scale_, c[1] / scale_, c[2] / scale_)));
+  float value = 0.0f;
+  openvdb::tools::BoxSampler::sample(grids_->surface->getConstAccessor(), indexOf(*grids_->surface, x, scale_, up_),
+                                     value);
+  return scale_ * static_cast<double>(value);
 }
 
 Vec3 CacheFrameReader::velocity(const Vec3& x) const {
-  const Vec3 c = toCacheAxes(x, up_);
   const openvdb::Vec3SGrid& field = *grids_->velocity;
-  const openvdb::Vec3d index = field.worldToIndex(openvdb::Vec3d(c[0] / scale_, c[1] / scale_, c[2] / scale_));
+  const openvdb::Vec3d index = indexOf(field, x, scale_, up_);
   openvdb::Vec3s v(0.0f);
   // A staggered grid (Houdini's FLIP `vel`, fluidsound's `velocity`) holds each component on the
   // voxel's low face.
@@ -194,8 +200,7 @@ sim::Array3f CacheFrameReader::cellCentrePhi(const sim::GridGeometry& grid) cons
     double scale;
     UpAxis up;
     void operator()(int i, int j, int k, const Vec3& x) {
-      const Vec3 c = toCacheAxes(x, up);
-      const openvdb::Vec3d index = grid->worldToIndex(openvdb::Vec3d(c[0] / scale, c[1] / scale, c[2] / scale));
+      const openvdb::Vec3d index = indexOf(*grid, x, scale, up);
       float value = 0.0f;
       openvdb::tools::BoxSampler::sample(accessor, index, value);
       (*out)(i, j, k) = static_cast<float>(scale * value);
@@ -252,8 +257,7 @@ sim::MacVelocity CacheFrameReader::faceVelocity(const sim::GridGeometry& grid,
       double scale;
       UpAxis up;
       void operator()(int i, int j, int k, const Vec3& x) {
-        const Vec3 c = toCacheAxes(x, up);
-        const openvdb::Vec3d index = grid->worldToIndex(openvdb::Vec3d(c[0] / scale, c[1] / scale, c[2] / scale));
+        const openvdb::Vec3d index = indexOf(*grid, x, scale, up);
         openvdb::Vec3s value(0.0f);
         if (staggered) openvdb::tools::StaggeredBoxSampler::sample(accessor, index, value);
         else openvdb::tools::BoxSampler::sample(accessor, index, value);

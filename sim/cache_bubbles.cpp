@@ -31,24 +31,8 @@ double secondsSince(Clock::time_point start) {
   throw std::invalid_argument("cacheBubbles: frame " + std::to_string(frame) + ": " + what);
 }
 
-/// Faces wholly inside a solid move with it, as the solver's (its constrainToSolids, after Batty's
-/// Fluid3D `constrain_velocity`): a test whose probe reaches into a wall reads the wall's velocity.
-void constrainToSolids(MacVelocity& velocity, const SolidBoundary& solids) {
-  for (int a = 0; a < 3; ++a) {
-    float* u = velocity[a].data();
-    const float* open = solids.faceOpen[a].data();
-    const float* wall = solids.faceVelocity[a].data();
-    for (std::size_t f = 0; f < velocity[a].elementCount(); ++f)
-      if (open[f] <= 0.0f) u[f] = wall[f];
-  }
-}
-
-/// The solver's surface rules at its default seeding of 8 particles per cell (fluid_solver.cpp):
-/// a cell with half of them counts as full (the kernel's interior shortcut), one with 1.5× as
-/// liquid at least kCrowdedCellDepth cells deep.
-constexpr std::size_t kFullCellParticles = 4;
-constexpr std::size_t kCrowdedCellParticles = 12;
-constexpr double kCrowdedCellDepth = 0.1;
+/// The seeding density the solver's surface rules assume of a cache (its own default).
+constexpr int kCacheParticlesPerCell = 8;
 /// Cells around the particles' box whose surface value they may change: the kernel's reach (1.5
 /// cells, from the 3×3×3 cells around a centre) rounded up, plus one for a particle on a cell edge.
 constexpr int kSurfaceReachCells = 3;
@@ -106,9 +90,8 @@ void blend(const Array3f& a, const Array3f& b, float alpha, Array3f& out) {
   for (std::size_t i = 0; i < a.elementCount(); ++i) z[i] = x[i] + alpha * (y[i] - x[i]);
 }
 
-/// φ of the particles' own surface, as the solver makes it (liquid_surface.h): the kernel-averaged
-/// distance with radius r [m], and a cell holding 1.5× the seeding density (8 per cell) liquid
-/// whatever the kernel says. Sorts `particles` by cell (the bubble model reads them in any order).
+/// φ of the particles' own surface, as the solver makes it (solverSurfaceFromParticles) with radius
+/// r [m]. Sorts `particles` by cell (the bubble model reads them in any order).
 void particleSurface(Particles& particles, const GridGeometry& grid, double radius, Array3f& phi) {
   // Made on the part of the grid the particles reach (their box and the kernel's 2 cells around
   // it, one more for rounding); air elsewhere, as the whole grid's pass would give: a pour fills a
@@ -134,16 +117,10 @@ void particleSurface(Particles& particles, const GridGeometry& grid, double radi
   }
   particles.affine.assign(particles.size(), {});
   const CellIndex index = sortParticlesByCell(particles, part);
-  const Array3f own = liquidDistanceFromParticles(particles, index, part, radius, kFullCellParticles);
-  const auto inside = static_cast<float>(-kCrowdedCellDepth * grid.cellSize);
+  const Array3f own = solverSurfaceFromParticles(particles, index, part, radius, kCacheParticlesPerCell);
   for (int k = 0; k < part.cells[2]; ++k)
     for (int j = 0; j < part.cells[1]; ++j)
-      for (int i = 0; i < part.cells[0]; ++i) {
-        const std::size_t c = own.offset(i, j, k);
-        float value = own(i, j, k);
-        if (index.start[c + 1] - index.start[c] >= kCrowdedCellParticles) value = std::min(value, inside);
-        phi(first[0] + i, first[1] + j, first[2] + k) = value;
-      }
+      for (int i = 0; i < part.cells[0]; ++i) phi(first[0] + i, first[1] + j, first[2] + k) = own(i, j, k);
 }
 
 /// The particles of one frame that are also in the next: index in each.
@@ -246,7 +223,7 @@ CacheBubbleResult cacheBubbles(LiquidFrameSource& source, const GridGeometry& gr
     // The particles' ids: the cache's, or their nearest advected positions'.
     if (!hasIds(next)) {
       const std::vector<Vec3f> predicted =
-          advectParticles(previous.particles.position, previous.velocity, next.velocity, grid, interval);
+          carriedPositions(previous.particles.position, previous.velocity, next.velocity, grid, interval);
       next.particles.id =
           matchParticleIds(predicted, previous.particles.id, next.particles.position, kMatchRadiusCells * h, nextId);
     } else {

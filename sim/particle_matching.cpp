@@ -31,7 +31,7 @@ CellKey cellOf(const Vec3f& x, double radius) {
 
 }  // namespace
 
-std::vector<Vec3f> advectParticles(std::span<const Vec3f> from, const MacVelocity& velocityFrom,
+std::vector<Vec3f> carriedPositions(std::span<const Vec3f> from, const MacVelocity& velocityFrom,
                                    const MacVelocity& velocityTo, const GridGeometry& grid, double dt) {
   std::vector<Vec3f> out(from.size());
   for (std::size_t p = 0; p < from.size(); ++p) {

@@ -16,7 +16,7 @@ namespace fluidsound::sim {
 /// @brief Where each particle at `from` is after `dt` [s] in the velocity that goes linearly from
 ///        `velocityFrom` to `velocityTo` over the step: the midpoint rule (RK2), x + dt·u(x_half,
 ///        t + dt/2) with x_half = x + dt/2·u(x, t).
-std::vector<Vec3f> advectParticles(std::span<const Vec3f> from, const MacVelocity& velocityFrom,
+std::vector<Vec3f> carriedPositions(std::span<const Vec3f> from, const MacVelocity& velocityFrom,
                                    const MacVelocity& velocityTo, const GridGeometry& grid, double dt);
 
 /// @brief The id of each particle of `next`: that of the particle of `predicted` (the previous

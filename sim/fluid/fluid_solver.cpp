@@ -36,8 +36,6 @@ constexpr int kExtraLayers = 2;
 /// Substeps are cut so that none is shorter than this fraction of the previous: avoids a tiny last
 /// substep before a frame boundary (the remainder is split evenly over two substeps instead).
 constexpr double kMinimumSubstepFraction = 0.25;
-/// φ given to a crowded cell [cells]: inside, a little below its centre.
-constexpr double kCrowdedCellDepth = 0.1;
 /// Relative residual of the once-per-frame density correction's solve: it repeats every frame, so
 /// a loose solve suffices (5–8 multigrid-CG iterations).
 constexpr double kDensityCorrectionTolerance = 1e-3;
@@ -51,18 +49,6 @@ constexpr double kTrustSpeedCellsPerSecond = 10.0;
 /// Cells beyond the CFL number in which the level set is advected (LiquidLevelSet::advect): the
 /// band the surface can reach in a substep, plus the cells the interpolation next to it reads.
 constexpr double kLevelSetMarginCells = 3.0;
-/// Faces wholly inside solids move with the solid (after extrapolation filled them with liquid
-/// velocities): no particle is carried into a wall (Batty's Fluid3D `constrain_velocity`, here
-/// for the whole velocity of closed faces).
-void constrainToSolids(MacVelocity& velocity, const SolidBoundary& solids) {
-  for (int a = 0; a < 3; ++a) {
-    auto& u = velocity[a].values();
-    const auto& open = solids.faceOpen[a].values();
-    const auto& solid = solids.faceVelocity[a].values();
-    for (std::size_t f = 0; f < u.size(); ++f)
-      if (open[f] <= 0.0f) u[f] = solid[f];
-  }
-}
 
 /// The liquid distance the pressure solve sees: extended into cells whose centre is inside a solid
 /// and that touch the liquid (the cell or a face neighbour has φ < 0: φ = −h/2 there, after
@@ -169,7 +155,7 @@ FluidSolver::FluidSolver(const FluidScene& scene, FluidProperties properties)
 }
 
 std::size_t FluidSolver::fullCellCount() const {
-  return (static_cast<std::size_t>(scene_.solver.particlesPerCell) + 1) / 2;
+  return fullCellParticles(scene_.solver.particlesPerCell);
 }
 
 double FluidSolver::liquidVolume() const {
@@ -188,18 +174,7 @@ LevelSetHold FluidSolver::levelSetHold() const {
 FluidSolver::~FluidSolver() = default;
 
 Array3f FluidSolver::surfaceFromParticles(const CellIndex& index) const {
-  Array3f phi = liquidDistanceFromParticles(particles_, index, grid_, particleRadius_, fullCellCount());
-  // A cell holding 1.5× the seeding density is liquid whatever the kernel says: a sheet pressed
-  // against a wall puts its particles within a sliver of the wall, where the kernel-averaged
-  // surface would read the cell centre as air; as air it gets no pressure, gravity presses the
-  // sheet harder, and the particles pile up (measured: a pour onto a floor thinned all its new
-  // particles after the stream landed).
-  const std::size_t crowded = (3 * static_cast<std::size_t>(scene_.solver.particlesPerCell) + 1) / 2;
-  const float inside = static_cast<float>(-kCrowdedCellDepth * grid_.cellSize);
-  auto& value = phi.values();
-  for (std::size_t c = 0; c < value.size(); ++c)
-    if (index.start[c + 1] - index.start[c] >= crowded) value[c] = std::min(value[c], inside);
-  return phi;
+  return solverSurfaceFromParticles(particles_, index, grid_, particleRadius_, scene_.solver.particlesPerCell);
 }
 
 void FluidSolver::maintainParticles(FrameStats& stats) {

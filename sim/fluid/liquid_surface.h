@@ -33,6 +33,18 @@ Array3f liquidDistanceFromParticles(const Particles& particles, const CellIndex&
                                     const GridGeometry& grid, double particleRadius,
                                     std::size_t interiorCount = 0);
 
+/// Particles per cell that count as a full cell at a seeding of `particlesPerCell`: half, rounded up
+/// (the kernel's interior shortcut, the level set's certain-liquid rule).
+std::size_t fullCellParticles(int particlesPerCell);
+
+/// @brief The solver's surface from its particles: liquidDistanceFromParticles with
+///        fullCellParticles as full, and every cell holding 1.5× the seeding count (rounded up)
+///        at least 0.1 cell inside the liquid whatever the kernel says. The solver makes it every
+///        substep; the import of a cache (sim/cache_bubbles.h) the same way.
+/// @param particles  sorted by cell (index from sortParticlesByCell)
+Array3f solverSurfaceFromParticles(const Particles& particles, const CellIndex& index, const GridGeometry& grid,
+                                   double particleRadius, int particlesPerCell);
+
 /// @brief Volume of liquid [m³] from φ at cell centres: cells with |φ| ≥ h count whole or not
 ///        at all; the others by 4 × 4 × 4 samples of φ interpolated between centres, each
 ///        clamp(½ − φ/(h/4), 0, 1) liquid. Sampling, not clamp(½ − φ/h) at the centre: the

@@ -28,4 +28,14 @@ SolidBoundary solidBoundaryAt(const GridGeometry& grid, const Domain& domain,
   return boundary;
 }
 
+void constrainToSolids(MacVelocity& velocity, const SolidBoundary& solids) {
+  for (int a = 0; a < 3; ++a) {
+    auto& u = velocity[a].values();
+    const auto& open = solids.faceOpen[a].values();
+    const auto& solid = solids.faceVelocity[a].values();
+    for (std::size_t f = 0; f < u.size(); ++f)
+      if (open[f] <= 0.0f) u[f] = solid[f];
+  }
+}
+
 }  // namespace fluidsound::sim

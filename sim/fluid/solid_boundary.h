@@ -10,6 +10,7 @@
 #include "sim/fluid/array3.h"
 #include "sim/fluid/fluid_scene.h"
 #include "sim/fluid/grid.h"
+#include "sim/fluid/mac_velocity.h"
 #include "sim/fluid/scene_mesh_distances.h"
 #include "sim/fluid/solid_mesh_rays.h"
 
@@ -32,6 +33,12 @@ struct SolidBoundary {
   /// Ray queries against the mesh solids (never null; may be empty).
   const SolidMeshRays* meshes = nullptr;
 };
+
+/// @brief Faces wholly inside solids (open fraction ≤ 0) take the solid's velocity, after
+///        extrapolation filled them with liquid velocities: no particle is carried into a wall, and
+///        a test probing into one reads the wall's velocity (Batty's Fluid3D `constrain_velocity`,
+///        here for the whole velocity of closed faces). The solver and a cache's import use it.
+void constrainToSolids(MacVelocity& velocity, const SolidBoundary& solids);
 
 /// The times [s] at which the mesh solids are placed for a particle move: where it starts and
 /// where it ends (from = to for an instantaneous move such as a position correction).

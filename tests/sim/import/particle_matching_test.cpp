@@ -25,7 +25,7 @@ TEST(ParticleMatching, AdvectionInAUniformFlowIsExact) {
   const UniformFlow f;
   const std::vector<Vec3f> from{{0.02f, 0.05f, 0.03f}, {0.07f, 0.06f, 0.04f}};
   const double dt = 1.0 / 30.0;
-  const std::vector<Vec3f> to = advectParticles(from, f.velocity, f.velocity, f.grid, dt);
+  const std::vector<Vec3f> to = carriedPositions(from, f.velocity, f.velocity, f.grid, dt);
   for (std::size_t p = 0; p < from.size(); ++p)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(to[p][c], from[p][c] + f.u[c] * dt, 1e-7);
 }
@@ -52,7 +52,7 @@ TEST(ParticleMatching, ShuffledParticlesOfTheNextFrameFindTheirIds) {
     after.push_back({static_cast<float>(before[p][0] + f.u[0] * dt), static_cast<float>(before[p][1] + f.u[1] * dt),
                      static_cast<float>(before[p][2] + f.u[2] * dt)});
   after.push_back({0.09f, 0.01f, 0.09f});  // emitted since the frame before
-  const std::vector<Vec3f> predicted = advectParticles(before, f.velocity, f.velocity, f.grid, dt);
+  const std::vector<Vec3f> predicted = carriedPositions(before, f.velocity, f.velocity, f.grid, dt);
   std::uint64_t nextId = 5000;
   const std::vector<std::uint64_t> found = matchParticleIds(predicted, ids, after, f.grid.cellSize, nextId);
   ASSERT_EQ(found.size(), after.size());
