@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/task_group.h>
+
 #include "sim/bubbles/bubble_model.h"
 #include "sim/fluid/liquid_surface.h"
 #include "sim/fluid/particle_transfer.h"
@@ -182,8 +184,25 @@ CacheBubbleResult cacheBubbles(LiquidFrameSource& source, const GridGeometry& gr
   ImportSolids solids(scene, grid);
   CacheBubbleResult result;
 
+  // Frame f + 1 is read while the bubble model steps towards frame f: a task of the caller's TBB
+  // arena, so with one thread it runs when waited for, and the frames' order and bits are the
+  // same for any thread count. Every path out of the loop waits for it (task_group's rule).
+  tbb::task_group reading;
+  std::optional<LiquidFrame> ahead;
+  const auto readAhead = [&](int f) {
+    if (f < count) reading.run([&ahead, &source, f] { ahead = source.frame(f); });
+  };
+  const auto takeAhead = [&] {
+    reading.wait();  // rethrows the read's error
+    LiquidFrame frame = std::move(*ahead);
+    ahead.reset();
+    return frame;
+  };
+
   auto t0 = Clock::now();
-  LiquidFrame previous = source.frame(0);
+  readAhead(0);
+  LiquidFrame previous = takeAhead();
+  readAhead(1);
   completeFrame(previous, 0, grid, solids.at(previous.time));
   // A frame has the cache's ids when it has one per particle (a frame without particles has them
   // all); otherwise its particles are found in the frame before by their advected positions.
@@ -207,11 +226,13 @@ CacheBubbleResult cacheBubbles(LiquidFrameSource& source, const GridGeometry& gr
   Particles substep;  // the particles at a substep's end (sorted by cell when the surface is made)
   for (int f = 1; f < count; ++f) {
     if (observer.wasInterrupted()) {
+      reading.wait();
       result.interruptedAt = f;
       break;
     }
     t0 = Clock::now();
-    LiquidFrame next = source.frame(f);
+    LiquidFrame next = takeAhead();
+    readAhead(f + 1);
     completeFrame(next, f, grid, solids.at(next.time));
     CacheFrameRecord record;
     record.frame = f;

@@ -55,7 +55,8 @@ struct CacheFrameRecord {
   std::size_t followed = 0;   ///< of them, found in the frame before (by id or by position)
   int substeps = 0;           ///< from the frame before to this one (0 for the first)
   std::size_t bubblesAlive = 0, bubblesTotal = 0;
-  double readSeconds = 0.0;    ///< wall time of reading the frame [s]
+  double readSeconds = 0.0;    ///< wall time the import waited for the frame and checked it [s]: it is read
+                               ///< while the bubble model steps towards the frame before (with 2+ threads)
   double bubbleSeconds = 0.0;  ///< wall time of the bubble model's substeps [s]
 };
 
