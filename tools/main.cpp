@@ -15,6 +15,7 @@
 #include "tools/run_command.h"
 #include "tools/run_report.h"
 #include "tools/simulate_command.h"
+#include "tools/modes_command.h"
 #include "tools/spectrogram_command.h"
 #include "tools/synth_command.h"
 #include "tools/transfer_command.h"
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   TransferOptions transfer;
   RunOptions run;
   FromCacheOptions fromCache;
+  ModesOptions modes;
   CLI::App* synthCommand = addSynthCommand(app, synth);
   CLI::App* spectrogramCommand = addSpectrogramCommand(app, spectrogram);
   CLI::App* validateCommand = addValidateCommand(app, validate);
@@ -56,6 +58,7 @@ int main(int argc, char** argv) {
   CLI::App* transferCommand = addTransferCommand(app, transfer);
   CLI::App* runCommand = addRunCommand(app, run);
   CLI::App* fromCacheCommand = addFromCacheCommand(app, fromCache);
+  CLI::App* modesCommand = addModesCommand(app, modes);
 
   try {
     app.parse(argc, argv);
@@ -80,6 +83,7 @@ int main(int argc, char** argv) {
     if (simulateCommand->parsed())
       return runWithThreads(simulate.common.threads, [&] { return runSimulateCommand(simulate); });
     if (runCommand->parsed()) return runWithThreads(run.common.threads, [&] { return runRunCommand(run); });
+    if (modesCommand->parsed()) return runWithThreads(modes.common.threads, [&] { return runModesCommand(modes); });
     if (fromCacheCommand->parsed())
       return runWithThreads(fromCache.common.threads, [&] { return runFromCacheCommand(fromCache); });
     if (transferCommand->parsed())
