@@ -35,7 +35,7 @@ double halfSinePulseFactor(double angularFrequency, double duration) {
   const double x = angularFrequency * duration / std::numbers::pi;  // ω·t_c/π
   const double denominator = 1.0 - x * x;
   if (std::abs(denominator) < 1e-6) return std::numbers::pi / 4.0;  // the limit at ω·t_c = π
-  return std::abs(std::cos(0.5 * angularFrequency * duration) / denominator);
+  return std::cos(0.5 * angularFrequency * duration) / denominator;
 }
 
 }  // namespace fluidsound::acoustics

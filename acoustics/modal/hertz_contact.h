@@ -28,8 +28,11 @@ HertzImpact hertzImpact(double effectiveMass, double effectiveRadius, double con
 
 /// @brief How much of an impulse a mode of angular frequency ω [rad/s] receives from a half-sine
 ///        force pulse of duration t_c [s] (the Hertz force's usual stand-in), against an ideal
-///        impulse: |F̂(ω)|/J = |cos(ω·t_c/2)| / |1 − (ω·t_c/π)²| (1 at ω → 0; π/4 at ω = π/t_c,
-///        the removable point; 0 at ω = 3π/t_c). Derived from ∫ sin(πt/t_c)e^{−iωt}dt (solids.md T5).
+///        impulse at the pulse's centre: the pulse's spectrum referred to its centre over its
+///        impulse, cos(ω·t_c/2) / (1 − (ω·t_c/π)²) — real, 1 at ω → 0, π/4 at ω = π/t_c (the
+///        removable point), 0 at ω = 3π/t_c and negative (the mode rung in opposite phase) beyond.
+///        Derived from ∫₀^{t_c} sin(πt/t_c)·e^{−iω(t − t_c/2)} dt = (2t_c/π)·cos(ωt_c/2)/(1 − (ωt_c/π)²)
+///        (shared solids.md T5 gives its magnitude).
 double halfSinePulseFactor(double angularFrequency, double duration);
 
 }  // namespace fluidsound::acoustics

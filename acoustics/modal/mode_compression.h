@@ -28,8 +28,9 @@ struct ModeGroups {
 /// @brief Groups modes given in ascending frequency [Hz]: walking up, a mode joins the group of
 ///        the mode before when it lies within frequencyDiscriminationLimit(f_lead) of that group's
 ///        lead; so every mode of a group lies within the limit of the frequency the group sounds at.
-///        The group's shape is the sum of its members' shapes (the thesis: "replace the two columns
-///        of U by their sum").
+///        A group sounds as one oscillator at its lead's frequency and decay; an impact gives it
+///        the members' combined amplitude (modal_synthesis.h: energy-preserving, not the thesis's
+///        sum of the shapes' columns, which cancels or doubles modes that beat: docs/solids.md).
 /// @throws std::invalid_argument if the frequencies are not ascending or not finite
 ModeGroups groupIndistinguishableModes(std::span<const double> frequencies);
 
