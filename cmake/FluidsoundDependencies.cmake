@@ -14,6 +14,7 @@ pkg_check_modules(SndFile REQUIRED IMPORTED_TARGET sndfile)   # WAV / FLAC
 pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)       # spectrogram PNG with labelled axes
 pkg_check_modules(EBUR128 REQUIRED IMPORTED_TARGET libebur128)  # BS.1770 loudness, true peak
 pkg_check_modules(MYSOFA REQUIRED IMPORTED_TARGET libmysofa)    # SOFA HRTF sets (binaural heads)
+pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)  # rigid bodies (zlib), doubles
 # OpenVDB ships only a Find module, in a folder that also holds its own FindTBB: look for TBB
 # (above) first, so oneTBB's config wins (toolchain facts, pitfall 1).
 list(APPEND CMAKE_MODULE_PATH "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB")

@@ -27,7 +27,7 @@ import re
 import sys
 
 # The folders whose sources are checked, upstream first: each is one CMake target's sources.
-LIBRARY_FOLDERS = ("sim/core", "sim/fluid", "sim/bubbles", "sim", "acoustics/bubble",
+LIBRARY_FOLDERS = ("sim/core", "sim/fluid", "sim/bubbles", "sim/bodies", "sim", "acoustics/bubble",
                    "acoustics/transfer", "acoustics/synthesis", "acoustics/analysis",
                    "acoustics/binaural", "acoustics/modal", "io", "tools")
 # The top-level folders a project include starts with (anything else is a system header).

@@ -15,6 +15,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
   libcairo2-dev libebur128-dev libsuitesparse-dev libspectra-dev
   libmysofa-dev       # SOFA HRTF sets; its runtime package ships the MIT KEMAR set
+  libbullet-dev       # rigid bodies of the solids (zlib licence)
   python3 time        # tools/make_example_bubbles.py and tools/bench.sh only
   clang-14 libclang-rt-14-dev   # tools/fuzz.sh only: libFuzzer and the sanitizers' runtimes
 )
