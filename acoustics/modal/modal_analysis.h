@@ -35,6 +35,9 @@ struct ModalModel {
   std::vector<double> dampedFrequency;
   std::vector<int> surfaceNodes;                  ///< the mesh nodes on the surface, ascending
   std::vector<Eigen::Vector3d> surfacePositions;  ///< their positions [m]
+  /// the surface's squares (h × h, h = voxelSize), their corners as indices into surfaceNodes
+  std::vector<SurfaceFace> surfaceFaces;
+  double voxelSize = 0.0;  ///< h [m]
   /// (3 · surface nodes) × modes: mode j's displacement at surface node s along axis c is
   /// row 3s + c of column j [1/√kg], from M-orthonormal shapes (φᵀMφ = 1 over all nodes, M the
   /// consistent mass); each shape's sign is arbitrary but fixed.

@@ -3,6 +3,8 @@
 // factorisation of K − σM (SuiteSparse, LGPL-2.1+) (shared solids.md §3.3).
 #pragma once
 
+#include <memory>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -16,6 +18,30 @@ struct GeneralisedEigenpairs {
   Eigen::VectorXd eigenvalues;   ///< λ_j = ω_j² [rad²/s²], ascending
   Eigen::MatrixXd eigenvectors;  ///< DOFs × pairs, M-orthonormal columns (xᵀ M x = 1)
   int operations = 0;            ///< shift-invert solves the Lanczos iteration took
+};
+
+/// K − σM factorised once, for as many requests of the lowest eigenpairs as needed (a body's
+/// modal analysis asks for a few, then more until it passes the highest audible frequency).
+class LowestEigenpairsSolver {
+ public:
+  /// @brief Factorises K − σM (CHOLMOD's supernodal Cholesky) and keeps M without its explicit
+  ///        zeros for the products. The matrices must outlive the solver.
+  /// @throws std::runtime_error when K − σM is not positive definite
+  LowestEigenpairsSolver(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                         double shift);
+  ~LowestEigenpairsSolver();
+  LowestEigenpairsSolver(const LowestEigenpairsSolver&) = delete;
+  LowestEigenpairsSolver& operator=(const LowestEigenpairsSolver&) = delete;
+
+  /// @brief The `count` lowest pairs, as lowestEigenpairs.
+  GeneralisedEigenpairs lowest(int count) const;
+
+ private:
+  struct Factor;
+  const Eigen::SparseMatrix<double>& stiffness_;
+  const Eigen::SparseMatrix<double>& mass_;
+  double shift_;
+  std::unique_ptr<Factor> factor_;  // none for a system solved densely
 };
 
 /// @brief The `count` eigenpairs of K x = λ M x nearest above the shift σ, i.e. the lowest ones

@@ -95,8 +95,8 @@ HexMesh hexMesh(const VoxelSolid& solid) {
   return mesh;
 }
 
-std::vector<int> surfaceNodes(const VoxelSolid& solid, const HexMesh& mesh) {
-  std::vector<int> surface;
+std::vector<SurfaceFace> surfaceFaces(const VoxelSolid& solid, const HexMesh& mesh) {
+  std::vector<SurfaceFace> faces;
   for (std::size_t e = 0; e < solid.cells.size(); ++e)
     for (int axis = 0; axis < 3; ++axis)
       for (int side = 0; side < 2; ++side) {
@@ -104,9 +104,20 @@ std::vector<int> surfaceNodes(const VoxelSolid& solid, const HexMesh& mesh) {
         neighbour[axis] += side == 0 ? -1 : 1;
         if (findIndex(solid.cells, neighbour) >= 0) continue;
         // The face's four corners: local nodes whose bit `axis` equals `side`.
+        SurfaceFace face;
+        face.axis = axis;
+        face.side = side == 0 ? -1 : 1;
+        int corner = 0;
         for (int a = 0; a < 8; ++a)
-          if (((a >> axis) & 1) == side) surface.push_back(mesh.elements[e][a]);
+          if (((a >> axis) & 1) == side) face.nodes[corner++] = mesh.elements[e][a];
+        faces.push_back(face);
       }
+  return faces;
+}
+
+std::vector<int> surfaceNodes(const VoxelSolid& solid, const HexMesh& mesh) {
+  std::vector<int> surface;
+  for (const SurfaceFace& face : surfaceFaces(solid, mesh)) surface.insert(surface.end(), face.nodes.begin(), face.nodes.end());
   std::sort(surface.begin(), surface.end());
   surface.erase(std::unique(surface.begin(), surface.end()), surface.end());
   return surface;

@@ -51,6 +51,18 @@ struct HexMesh {
 /// The mesh of `solid`'s cells: a node at every cell corner.
 HexMesh hexMesh(const VoxelSolid& solid);
 
+/// A cell face that is not shared by two solid cells: a square of the body's surface.
+struct SurfaceFace {
+  std::array<int, 4> nodes{};  ///< its corners (mesh node indices, or surface-node indices in ModalModel)
+  int axis = 0;                ///< its outward normal lies along this axis (0 x, 1 y, 2 z)…
+  int side = 1;                ///< …pointing to + (1) or − (−1)
+  friend bool operator==(const SurfaceFace&, const SurfaceFace&) = default;
+};
+
+/// @brief The solid's surface faces, cell by cell in the solid's order, then −x, +x, −y, … .
+///        `mesh` must be hexMesh(solid).
+std::vector<SurfaceFace> surfaceFaces(const VoxelSolid& solid, const HexMesh& mesh);
+
 /// @brief The nodes on the solid's surface: corners of a cell face that is not shared by two
 ///        solid cells. Ascending node indices of `mesh`, which must be hexMesh(solid).
 std::vector<int> surfaceNodes(const VoxelSolid& solid, const HexMesh& mesh);
