@@ -1,0 +1,49 @@
+// acoustics/modal/contact_impacts.h — the impacts a body's modes hear in the rigid-body stage's
+// contact log (sim/bodies/contact_record.h, re-expressed on the sounding body): a touch that
+// closes faster than a threshold after not doing so in the substep before is one impact, its
+// points' impulses summed (docs/solids.md, Impacts). Resting, sliding and rolling contacts are
+// not impacts: a steady load makes no sound, and their continuous excitation is another model.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "acoustics/modal/modal_analysis.h"
+#include "acoustics/modal/modal_synthesis.h"
+
+namespace fluidsound::acoustics {
+
+/// One logged contact point of one substep, on the body that sounds, in its own frame (the frame
+/// of its mesh, which is its modal model's).
+struct BodyContactPoint {
+  double time = 0.0;                                      ///< end of the substep [s]
+  int other = 0;                                          ///< the body or wall touched (the log's index)
+  Eigen::Vector3d localPoint = Eigen::Vector3d::Zero();  ///< on this body [m]
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();     ///< on this body this substep [N·s]
+  double normalSpeed = 0.0;                               ///< closing speed before the solve [m/s]
+};
+
+struct ImpactDetection {
+  /// ε_imp: a touch closing slower than this is no impact [m/s] (the sample-playback paper's
+  /// 0.02 m/s, shared solids.md §1.4).
+  double minimumSpeed = 0.02;
+  double substep = 1e-3;  ///< the log's substep [s]
+};
+
+/// @brief The impacts on a body in its contact points (in time order, any order within a
+///        substep). For each substep and other body: an impact when some point closes faster
+///        than minimumSpeed and no point of that pair did in the substep before. Its impulse is
+///        the sum of the pair's points' impulses in that substep, applied at the surface node
+///        nearest their impulse-weighted mean point, at the substep's start (the solve's
+///        contact), lasting contactDuration(first point, closing speed) [s] (Hertz: hertz_contact.h).
+std::vector<ModalImpact> impactsFromContacts(std::span<const BodyContactPoint> points, const ModalModel& model,
+                                             const ImpactDetection& detection,
+                                             const std::function<double(const BodyContactPoint&, double)>& contactDuration);
+
+/// The index of the surface node of `model` nearest `point` [m] (the model's frame).
+std::size_t nearestSurfaceNode(const ModalModel& model, const Eigen::Vector3d& point);
+
+}  // namespace fluidsound::acoustics
