@@ -135,4 +135,39 @@ std::vector<float> synthesizeModalImpacts(const ModalModel& model, std::span<con
   return out;
 }
 
+std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<const ModalForce> forces,
+                                         std::span<const std::complex<double>> gains, std::size_t samples,
+                                         double delay, const ModalSynthesisSettings& settings) {
+  const std::size_t modes = model.frequency.size();
+  if (gains.size() != modes) throw std::invalid_argument("synthesizeModalForces: one gain per mode");
+  if (!(settings.sampleRate > 0.0) || !(delay >= 0.0))
+    throw std::invalid_argument("synthesizeModalForces: sample rate > 0 and delay >= 0");
+  const double dt = 1.0 / settings.sampleRate;
+  std::vector<float> out(samples, 0.0f);
+  std::vector<double> modal;
+  for (const ModalForce& force : forces) {
+    if (force.surfaceNode >= model.surfaceNodes.size())
+      throw std::invalid_argument("synthesizeModalForces: surface node out of range");
+    const auto row = static_cast<Eigen::Index>(3 * force.surfaceNode);
+    const auto first = static_cast<long long>(std::llround((force.startTime + delay) * settings.sampleRate));
+    for (std::size_t j = 0; j < modes; ++j) {
+      const double omegaD = 2.0 * std::numbers::pi * model.dampedFrequency[j];
+      if (!(omegaD > 0.0)) continue;
+      const std::complex<double> s(-model.decayRate[j], omegaD), r = std::exp(s * dt);
+      const std::complex<double> drive = gains[j] * (r - 1.0) / (s * omegaD);  // the gain folded in
+      const Eigen::Vector3f shape = model.surfaceShapes.block<3, 1>(row, static_cast<Eigen::Index>(j));
+      std::complex<double> z = 0.0;
+      // Driven over the force's samples, then ringing out to the end of the output.
+      for (long long n = std::max(first, 0LL); n < static_cast<long long>(samples); ++n) {
+        const long long i = n - first;
+        out[static_cast<std::size_t>(n)] += static_cast<float>(z.imag());
+        z *= r;
+        if (i < static_cast<long long>(force.force.size()))
+          z += drive * static_cast<double>(shape.dot(force.force[static_cast<std::size_t>(i)]));
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace fluidsound::acoustics

@@ -70,4 +70,20 @@ std::vector<float> synthesizeModalImpacts(const ModalModel& model, std::span<con
                                           double delay, const ModalSynthesisSettings& settings,
                                           ModalSynthesisStatistics* statistics = nullptr);
 
+/// A force applied at one surface node, sample by sample (a rubbing contact: surface_roughness.h).
+struct ModalForce {
+  double startTime = 0.0;                   ///< time of the first sample [s]
+  std::size_t surfaceNode = 0;              ///< where: index into ModalModel::surfaceNodes
+  std::span<const Eigen::Vector3f> force;   ///< [N] on the body, its frame, one per sample
+};
+
+/// @brief `samples` samples of Σ_j Im(g_j·z_j) driven by forces held constant over each sample:
+///        z ← r·z + g·(r − 1)/(s·ω_d), g = φ_j(x)·F, the exact response of the damped mode to a
+///        piecewise-constant force (q = Im z; a constant g settles at g/ω², the static
+///        deflection). The same modes, gains and delay as synthesizeModalImpacts; a force's
+///        samples start at the output sample nearest its startTime + delay.
+std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<const ModalForce> forces,
+                                         std::span<const std::complex<double>> gains, std::size_t samples,
+                                         double delay, const ModalSynthesisSettings& settings);
+
 }  // namespace fluidsound::acoustics
