@@ -24,6 +24,12 @@ struct BodyContactPoint {
   Eigen::Vector3d localPoint = Eigen::Vector3d::Zero();  ///< on this body [m]
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();     ///< on this body this substep [N·s]
   double normalSpeed = 0.0;                               ///< closing speed before the solve [m/s]
+  double normalImpulse = 0.0;                             ///< its normal part [N·s], ≥ 0
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();     ///< unit, into this body [-]
+  double tangentialSpeed = 0.0;                           ///< sliding speed at the point [m/s]
+  /// the rolling rate times the other body's radius at the point: how fast a rolling contact
+  /// moves over this body's surface [m/s]
+  double rollingSpeed = 0.0;
 };
 
 struct ImpactDetection {

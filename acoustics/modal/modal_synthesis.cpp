@@ -144,26 +144,31 @@ std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<cons
     throw std::invalid_argument("synthesizeModalForces: sample rate > 0 and delay >= 0");
   const double dt = 1.0 / settings.sampleRate;
   std::vector<float> out(samples, 0.0f);
-  std::vector<double> modal;
+  std::vector<double> drive;  // the force on mode j at each sample: φ_j(x_n)·F_n
   for (const ModalForce& force : forces) {
-    if (force.surfaceNode >= model.surfaceNodes.size())
-      throw std::invalid_argument("synthesizeModalForces: surface node out of range");
-    const auto row = static_cast<Eigen::Index>(3 * force.surfaceNode);
+    if (force.surfaceNodes.size() != 1 && force.surfaceNodes.size() != force.force.size())
+      throw std::invalid_argument("synthesizeModalForces: one surface node, or one per force sample");
+    for (std::size_t node : force.surfaceNodes)
+      if (node >= model.surfaceNodes.size()) throw std::invalid_argument("synthesizeModalForces: surface node out of range");
     const auto first = static_cast<long long>(std::llround((force.startTime + delay) * settings.sampleRate));
+    drive.resize(force.force.size());
     for (std::size_t j = 0; j < modes; ++j) {
       const double omegaD = 2.0 * std::numbers::pi * model.dampedFrequency[j];
       if (!(omegaD > 0.0)) continue;
       const std::complex<double> s(-model.decayRate[j], omegaD), r = std::exp(s * dt);
-      const std::complex<double> drive = gains[j] * (r - 1.0) / (s * omegaD);  // the gain folded in
-      const Eigen::Vector3f shape = model.surfaceShapes.block<3, 1>(row, static_cast<Eigen::Index>(j));
+      const std::complex<double> step = gains[j] * (r - 1.0) / (s * omegaD);  // the gain folded in
+      for (std::size_t i = 0; i < drive.size(); ++i) {
+        const std::size_t node = force.surfaceNodes[force.surfaceNodes.size() == 1 ? 0 : i];
+        const Eigen::Vector3f shape = model.surfaceShapes.block<3, 1>(static_cast<Eigen::Index>(3 * node), static_cast<Eigen::Index>(j));
+        drive[i] = static_cast<double>(shape.dot(force.force[i]));
+      }
       std::complex<double> z = 0.0;
       // Driven over the force's samples, then ringing out to the end of the output.
       for (long long n = std::max(first, 0LL); n < static_cast<long long>(samples); ++n) {
         const long long i = n - first;
         out[static_cast<std::size_t>(n)] += static_cast<float>(z.imag());
         z *= r;
-        if (i < static_cast<long long>(force.force.size()))
-          z += drive * static_cast<double>(shape.dot(force.force[static_cast<std::size_t>(i)]));
+        if (i < static_cast<long long>(drive.size())) z += step * drive[static_cast<std::size_t>(i)];
       }
     }
   }

@@ -70,11 +70,13 @@ std::vector<float> synthesizeModalImpacts(const ModalModel& model, std::span<con
                                           double delay, const ModalSynthesisSettings& settings,
                                           ModalSynthesisStatistics* statistics = nullptr);
 
-/// A force applied at one surface node, sample by sample (a rubbing contact: surface_roughness.h).
+/// A force applied at a surface node, sample by sample (a rubbing contact: surface_roughness.h).
 struct ModalForce {
   double startTime = 0.0;                   ///< time of the first sample [s]
-  std::size_t surfaceNode = 0;              ///< where: index into ModalModel::surfaceNodes
   std::span<const Eigen::Vector3f> force;   ///< [N] on the body, its frame, one per sample
+  /// where, sample by sample: indices into ModalModel::surfaceNodes, as many as `force`, or one
+  /// for all (a contact that stays put)
+  std::span<const std::size_t> surfaceNodes;
 };
 
 /// @brief `samples` samples of Σ_j Im(g_j·z_j) driven by forces held constant over each sample:

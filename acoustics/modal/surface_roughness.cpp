@@ -60,6 +60,8 @@ RubbingForce rubbingForce(std::span<const RubbingSample> substeps, const Roughne
   const double end = substeps.back().time;
   const auto count = static_cast<std::size_t>(std::ceil((end - out.startTime) * settings.sampleRate - 1e-9));
   out.force.resize(count);
+  out.surfaceNodes.resize(count);
+  out.rolling.resize(count);
   double travelled = 0.0;
   std::size_t k = 0;  // the substep whose midpoint is the last at or before t (or the first)
   for (std::size_t n = 0; n < count; ++n) {
@@ -74,6 +76,11 @@ RubbingForce rubbingForce(std::span<const RubbingSample> substeps, const Roughne
     travelled += speed * dt;
     const double size = settings.roughness * load * speed / (speed + settings.quietSpeed) * surface.height(travelled);
     out.force[n] = (size * a.normal).cast<float>();
+    // The substep the sample lies in (not the midpoint before it) says where and how it rubs.
+    const RubbingSample& in = substeps[std::min<std::size_t>(
+        substeps.size() - 1, static_cast<std::size_t>(std::max(0.0, std::floor((t - out.startTime) / h))))];
+    out.surfaceNodes[n] = in.surfaceNode;
+    out.rolling[n] = in.rolling ? 1 : 0;
   }
   return out;
 }

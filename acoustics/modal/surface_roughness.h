@@ -41,6 +41,8 @@ struct RubbingSample {
   double normalForce = 0.0;                             ///< mean normal force over it [N], ≥ 0
   double speed = 0.0;                                   ///< the contact's speed over the surface [m/s]
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< into the sounding body, its frame
+  std::size_t surfaceNode = 0;                          ///< where it touches (ModalModel::surfaceNodes)
+  bool rolling = false;                                 ///< rolling (true) or sliding: which stem it sounds in
 };
 
 struct RubbingSettings {
@@ -57,6 +59,8 @@ struct RubbingSettings {
 struct RubbingForce {
   double startTime = 0.0;                 ///< time of the first sample [s]: the first substep's start
   std::vector<Eigen::Vector3f> force;     ///< [N] on the body, its frame
+  std::vector<std::size_t> surfaceNodes;  ///< where, per sample (its substep's node)
+  std::vector<char> rolling;              ///< per sample: its substep rolls (1) or slides (0)
 };
 
 /// @brief The fluctuating part of the force [N] on the body over the substeps (consecutive, in

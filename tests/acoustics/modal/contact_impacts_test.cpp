@@ -12,6 +12,7 @@
 
 #include "acoustics/modal/hertz_contact.h"
 #include "sim/bodies/rigid_world.h"
+#include "support/body_contacts.h"
 
 namespace fluidsound::acoustics {
 namespace {
@@ -67,14 +68,10 @@ TEST(ContactImpacts, BouncingBallGivesOneImpactPerBounceAndNoneAtRest) {
   sim::RigidWorld world({plate, ball});
   world.advance(1.0);
 
-  std::vector<BodyContactPoint> onPlate;
+  const std::vector<BodyContactPoint> onPlate = test::contactsOn(world.contacts(), 0);
   std::size_t restingPoints = 0;
   for (const sim::ContactRecord& c : world.contacts()) {
     ASSERT_EQ(c.bodyA, 0);  // the plate: the lower index
-    const Eigen::Vector3d normal(c.normal[0], c.normal[1], c.normal[2]);
-    const Eigen::Vector3d friction(c.frictionImpulse[0], c.frictionImpulse[1], c.frictionImpulse[2]);
-    onPlate.push_back({c.time, c.bodyB, {c.localPointA[0], c.localPointA[1], c.localPointA[2]},
-                       c.normalImpulse * normal + friction, c.normalSpeed});
     if (c.time > 0.7) ++restingPoints;
   }
   const double mass = 4.0 / 3.0 * std::numbers::pi * std::pow(radius, 3) * steel.density;

@@ -119,7 +119,8 @@ TEST(SurfaceRoughness, ModesFollowAForceExactly) {
   model.surfaceShapes = Eigen::MatrixXf::Zero(3, 1);
   model.surfaceShapes(1, 0) = 1.0f;
   const std::vector<Eigen::Vector3f> step(4800, Eigen::Vector3f(0.0f, 2.0f, 0.0f));
-  const ModalForce force{0.0, 0, step};
+  const std::size_t node = 0;
+  const ModalForce force{0.0, step, {&node, 1}};
   const std::vector<std::complex<double>> gains{1.0};
   const std::vector<float> q = synthesizeModalForces(model, {&force, 1}, gains, 4800, 0.0, {});
   const double statics = 2.0 / (omega * omega);
