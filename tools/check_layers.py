@@ -29,7 +29,7 @@ import sys
 # The folders whose sources are checked, upstream first: each is one CMake target's sources.
 LIBRARY_FOLDERS = ("sim/core", "sim/fluid", "sim/bubbles", "sim/bodies", "sim", "acoustics/bubble",
                    "acoustics/transfer", "acoustics/synthesis", "acoustics/analysis",
-                   "acoustics/binaural", "acoustics/modal", "io", "tools")
+                   "acoustics/binaural", "acoustics/modal", "acoustics/playback", "io", "tools")
 # The top-level folders a project include starts with (anything else is a system header).
 PROJECT_TOP = ("sim", "acoustics", "io", "tools", "tests")
 CXX_SUFFIXES = (".h", ".hpp", ".cpp", ".cc", ".inl")
