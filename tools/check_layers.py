@@ -53,6 +53,8 @@ IO_RECORD_HEADERS = {
     "acoustics/binaural/hrir_table.h": "a head's impulse responses as a SOFA file holds them",
     "sim/liquid_frame.h": "a liquid cache's frame as the bubble model reads it: io fills it from OpenVDB files",
     "sim/cache_bubbles.h": "the frames of a liquid cache as the bubble model reads them: io implements its LiquidFrameSource",
+    "acoustics/modal/modal_analysis.h": "a body's modal model, cached on disk as KEY.modes",
+    "acoustics/modal/voxel_solid.h": "the surface faces a modal model holds (part of the cached record)",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')
 LINK_KEYWORDS = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE",

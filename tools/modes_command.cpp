@@ -2,6 +2,8 @@
 #include "tools/modes_command.h"
 
 #include <chrono>
+#include <optional>
+#include <sstream>
 #include <cstdio>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "acoustics/modal/solid_material.h"
 #include "io/input_error.h"
 #include "io/mesh_file.h"
+#include "io/modal_model_file.h"
 #include "tools/body_voxels.h"
 #include "tools/number_checks.h"
 
@@ -80,6 +83,7 @@ CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
   c->add_option("--clamp", o.clamp, "hold one face of the body's box fixed (a cantilever)")
       ->check(CLI::IsMember({"-x", "+x", "-y", "+y", "-z", "+z"}));
   c->add_flag("--json", o.json, "print JSON instead of a table");
+  c->add_option("--cache", o.cache, "folder of cached modal models (made if missing): reused when the mesh and settings match");
   addCommonOptions(*c, o.common);
   return c;
 }
@@ -101,7 +105,23 @@ int runModesCommand(const ModesOptions& o) {
   if (!o.common.quiet)
     std::fprintf(stderr, "fluidsound: modes of %s: %zu voxels of %.3g mm\n", o.mesh.c_str(), solid.cells.size(),
                  solid.voxelSize * 1e3);
-  const acoustics::ModalModel model = acoustics::analyseModes(solid, material, settings);
+  // The cache key: the mesh's bytes and every setting that shapes the modes.
+  std::ostringstream key;
+  key.precision(17);
+  key << "scale " << o.scale << " material " << material.density << ' ' << material.youngsModulus << ' '
+      << material.poissonsRatio << ' ' << material.rayleighMass << ' ' << material.rayleighStiffness << " resolution "
+      << o.resolution << " modes " << o.maxModes << " max " << o.maxFrequency << " clamp " << o.clamp;
+  const std::uint64_t cacheKey = o.cache.empty() ? 0 : io::modalCacheKey(o.mesh, key.str());
+  std::optional<acoustics::ModalModel> cached;
+  if (!o.cache.empty()) cached = io::readCachedModes(o.cache, cacheKey);
+  const acoustics::ModalModel model = cached ? *cached : acoustics::analyseModes(solid, material, settings);
+  std::string cacheUse = o.cache.empty() ? "none" : cached ? "read" : "written";
+  if (!o.cache.empty() && !cached) {
+    if (const auto problem = io::writeCachedModes(o.cache, cacheKey, model)) {
+      cacheUse = "not written";
+      if (!o.common.quiet) std::fprintf(stderr, "fluidsound: note: modes not cached: %s\n", problem->c_str());
+    }
+  }
   const acoustics::ModeGroups groups = acoustics::groupIndistinguishableModes(model.frequency);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -126,6 +146,8 @@ int runModesCommand(const ModesOptions& o) {
                               {"group", groups.group[i]},
                               {"surface_motion_xyz", acoustics::surfaceMotionShares(model, i)}});
     out["compressed_modes"] = groups.first.size();
+    out["cache"] = cacheUse;
+    if (!o.cache.empty()) out["cache_file"] = io::modalCacheFile(o.cache, cacheKey).string();
     out["seconds"] = seconds;
     std::printf("%s\n", out.dump(2).c_str());
   } else {
@@ -141,6 +163,8 @@ int runModesCommand(const ModesOptions& o) {
     std::printf("%zu modes up to %.0f Hz; %zu after compression (modes within the ear's frequency "
                 "discrimination merged); %.2f s\n",
                 model.frequency.size(), o.maxFrequency, groups.first.size(), seconds);
+    if (!o.cache.empty())
+      std::printf("cache: %s (%s)\n", cacheUse.c_str(), io::modalCacheFile(o.cache, cacheKey).c_str());
   }
   return kExitSuccess;
 }

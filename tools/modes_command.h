@@ -21,6 +21,7 @@ struct ModesOptions {
   double maxFrequency = 20000.0;  ///< [Hz]
   std::string clamp;              ///< a face of the body's box held fixed: -x, +x, -y, +y, -z, +z
   bool json = false;
+  std::string cache;  ///< a folder for the modal models (KEY.modes); empty: none
 };
 
 CLI::App* addModesCommand(CLI::App& app, ModesOptions& options);

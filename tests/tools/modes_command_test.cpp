@@ -155,6 +155,21 @@ TEST_F(ModesCommand, FreeSteelSphereRingsAtLambsFrequencyFiveTimesOver) {
   EXPECT_LT(x[4] / x[0] - 1.0, 0.005);
 }
 
+// --cache: the first run writes KEY.modes, the second reads it and prints the same modes; another
+// material is another key.
+TEST_F(ModesCommand, CacheGivesTheSameModesAgain) {
+  const std::string args = shellQuoted(bar().string()) + " --modes 6 --resolution 50 --cache " +
+                           shellQuoted((folder.path() / "cache").string());
+  const nlohmann::json first = modesJson(folder.path(), args), second = modesJson(folder.path(), args);
+  EXPECT_EQ(first["cache"], "written");
+  EXPECT_EQ(second["cache"], "read");
+  EXPECT_EQ(first["modes"], second["modes"]);
+  EXPECT_EQ(first["cache_file"], second["cache_file"]);
+  const nlohmann::json glass = modesJson(folder.path(), args + " --material glass");
+  EXPECT_EQ(glass["cache"], "written");
+  EXPECT_NE(glass["cache_file"], first["cache_file"]);
+}
+
 TEST_F(ModesCommand, BadInputExitsNamingWhatIsWrong) {
   const std::string mesh = bar().string();
   auto outcome = runFluidsound({"modes", mesh, "--material", "unobtainium"});
