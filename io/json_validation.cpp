@@ -191,8 +191,7 @@ std::string normalizedKey(std::string_view key) {
   return out;
 }
 
-std::string closestKey(std::string_view unknown, std::initializer_list<std::string_view> known,
-                       bool matchSharedStart) {
+std::string closestKey(std::string_view unknown, std::span<const std::string_view> known, bool matchSharedStart) {
   const std::string typed = normalizedKey(unknown);
   std::string best;
   std::size_t bestDistance = std::string::npos;

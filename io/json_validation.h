@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <span>
 #include <string_view>
 
 #include "io/input_error.h"
@@ -57,8 +58,11 @@ std::string normalizedKey(std::string_view key);
 ///        to case and separators, a prefix of at least 3 characters, 1 edit away (2 for keys of
 ///        5+ characters), or, with `matchSharedStart`, sharing its first 4 characters
 ///        (`rotation` → `rotate`). Among several, the first of the nearest.
-std::string closestKey(std::string_view unknown, std::initializer_list<std::string_view> known,
-                       bool matchSharedStart);
+std::string closestKey(std::string_view unknown, std::span<const std::string_view> known, bool matchSharedStart);
+inline std::string closestKey(std::string_view unknown, std::initializer_list<std::string_view> known,
+                              bool matchSharedStart) {
+  return closestKey(unknown, std::span<const std::string_view>(known.begin(), known.size()), matchSharedStart);
+}
 
 /// How a file format treats object keys it does not define.
 struct KeyRules {

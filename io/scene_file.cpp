@@ -21,6 +21,7 @@
 #include "io/render_limits.h"
 #include "io/scene_bubbles.h"
 #include "io/scene_shapes.h"
+#include "io/scene_bodies.h"
 #include "io/scene_transfer.h"
 #include "sim/fluid/fluid_scene.h"
 
@@ -117,7 +118,7 @@ class SceneReader {
     check_.requireFormat(root, kFormatTag);
     check_.rejectUnknownKeys(root, "",
                              {"format", "domain", "gravity", "time", "seed", "liquid", "emitters",
-                              "solids", "listeners", "audio", "solver", "bubbles", "transfer"});
+                              "solids", "bodies", "listeners", "audio", "solver", "bubbles", "transfer"});
 
     sim::Scene scene;
     scene.domain =
@@ -150,6 +151,10 @@ class SceneReader {
     if (const json* items = check_.optionalArray(root, "", "solids", "an array of solids")) {
       for (std::size_t i = 0; i < items->size(); ++i)
         scene.solids.push_back(readSolid(check_, (*items)[i], elementPath("solids", i), folder_));
+    }
+    if (const json* items = check_.optionalArray(root, "", "bodies", "an array of bodies")) {
+      for (std::size_t i = 0; i < items->size(); ++i)
+        scene.bodies.push_back(readSceneBody(check_, (*items)[i], elementPath("bodies", i), folder_, i));
     }
     scene.listeners = listeners(root, scene.domain, scene.gravity);
     if (const json* audio =

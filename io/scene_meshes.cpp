@@ -61,6 +61,14 @@ void loadSceneMeshes(sim::Scene& scene) {
     };
     loadMesh(*mesh, place, scene, "solids[" + std::to_string(i) + "].mesh");
   }
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    sim::SceneBody& body = scene.bodies[i];
+    auto* mesh = std::get_if<sim::MeshFile>(&body.shape);
+    if (mesh == nullptr) continue;
+    // A body's mesh stays in its own frame, scaled: the rigid-body stage places it by its pose.
+    const auto place = [&body](sim::TriangleMesh m) { return placedMesh(std::move(m), body.scale, {}, {}); };
+    loadMesh(*mesh, place, scene, "bodies[" + std::to_string(i) + "].mesh");
+  }
 }
 
 }  // namespace fluidsound::io

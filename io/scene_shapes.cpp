@@ -45,39 +45,6 @@ sim::MeshFile meshFile(const JsonValidator& check, const json& value, const std:
   return sim::MeshFile{resolved};
 }
 
-/// The one shape of a liquid or solid item: exactly one of "box", "sphere", "mesh".
-sim::Shape shape(const JsonValidator& check, const json& item, const std::string& path,
-                 const fs::path& folder) {
-  std::vector<std::string_view> given;
-  for (std::string_view key : {"box", "sphere", "mesh"}) {
-    if (item.contains(key)) given.push_back(key);
-  }
-  if (given.size() != 1) {
-    check.fail(path, "exactly one shape: box, sphere or mesh",
-               given.empty() ? "none of them" : joinWithAnd(given));
-  }
-  const std::string shapePath = memberPath(path, given.front());
-  const json& value = item[given.front()];
-  if (given.front() == "box") {
-    check.requireObject(value, shapePath, "an object with min and max (metres)");
-    check.rejectUnknownKeys(value, shapePath, {"min", "max"});
-    sim::Box box;
-    box.min = check.requiredVector(value, shapePath, "min", "metres");
-    box.max = check.requiredVector(value, shapePath, "max", "metres");
-    requireOrdered(check, value, shapePath, box.min, box.max);
-    return box;
-  }
-  if (given.front() == "sphere") {
-    check.requireObject(value, shapePath, "an object with center and radius (metres)");
-    check.rejectUnknownKeys(value, shapePath, {"center", "radius"});
-    sim::Sphere sphere;
-    sphere.center = check.requiredVector(value, shapePath, "center", "metres");
-    sphere.radius =
-        check.requiredNumber(value, shapePath, "radius", "a number > 0 (metres)", positive);
-    return sphere;
-  }
-  return meshFile(check, value, shapePath, folder);
-}
 
 /// A non-zero direction, returned normalised.
 Vec3 unitDirection(const JsonValidator& check, const json& parent, const std::string& parentPath,
@@ -156,6 +123,39 @@ void requireDiskInDomain(const JsonValidator& check, const json& disk, const std
 
 }  // namespace
 
+sim::Shape readShape(const JsonValidator& check, const json& item, const std::string& path,
+                 const fs::path& folder) {
+  std::vector<std::string_view> given;
+  for (std::string_view key : {"box", "sphere", "mesh"}) {
+    if (item.contains(key)) given.push_back(key);
+  }
+  if (given.size() != 1) {
+    check.fail(path, "exactly one shape: box, sphere or mesh",
+               given.empty() ? "none of them" : joinWithAnd(given));
+  }
+  const std::string shapePath = memberPath(path, given.front());
+  const json& value = item[given.front()];
+  if (given.front() == "box") {
+    check.requireObject(value, shapePath, "an object with min and max (metres)");
+    check.rejectUnknownKeys(value, shapePath, {"min", "max"});
+    sim::Box box;
+    box.min = check.requiredVector(value, shapePath, "min", "metres");
+    box.max = check.requiredVector(value, shapePath, "max", "metres");
+    requireOrdered(check, value, shapePath, box.min, box.max);
+    return box;
+  }
+  if (given.front() == "sphere") {
+    check.requireObject(value, shapePath, "an object with center and radius (metres)");
+    check.rejectUnknownKeys(value, shapePath, {"center", "radius"});
+    sim::Sphere sphere;
+    sphere.center = check.requiredVector(value, shapePath, "center", "metres");
+    sphere.radius =
+        check.requiredNumber(value, shapePath, "radius", "a number > 0 (metres)", positive);
+    return sphere;
+  }
+  return meshFile(check, value, shapePath, folder);
+}
+
 void requireOrdered(const JsonValidator& check, const json& box, const std::string& path,
                     const Vec3& min, const Vec3& max) {
   for (std::size_t a = 0; a < 3; ++a) {
@@ -177,7 +177,7 @@ sim::LiquidRegion readLiquidRegion(const JsonValidator& check, const json& item,
   check.requireObject(item, path, "an object with one of box, sphere or mesh");
   check.rejectUnknownKeys(item, path, {"box", "sphere", "mesh", "velocity"});
   sim::LiquidRegion region;
-  region.shape = shape(check, item, path, folder);
+  region.shape = readShape(check, item, path, folder);
   if (const json* velocity = findMember(item, "velocity")) {
     region.velocity = check.vector(*velocity, memberPath(path, "velocity"), "m/s");
     const Vec3& v = region.velocity;
@@ -229,7 +229,7 @@ sim::Solid readSolid(const JsonValidator& check, const json& item, const std::st
   check.rejectUnknownKeys(item, path,
                           {"box", "sphere", "mesh", "scale", "translate", "rotate", "path"});
   sim::Solid s;
-  s.shape = shape(check, item, path, folder);
+  s.shape = readShape(check, item, path, folder);
   s.scale = check.optionalNumber(item, path, "scale", 1.0, "a number > 0 (scale factor)", positive);
   if (const json* translate = findMember(item, "translate"))
     s.translate = check.vector(*translate, memberPath(path, "translate"), "metres");

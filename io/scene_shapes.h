@@ -37,6 +37,11 @@ sim::Emitter readEmitter(const JsonValidator& check, const nlohmann::json& item,
                          const std::string& path, const sim::TimeSettings& time,
                          const sim::Domain& domain);
 
+/// @brief The one shape of a liquid, solid or body item: exactly one of "box", "sphere", "mesh"
+///        (a mesh path resolved against `folder`; the file is opened, not read).
+sim::Shape readShape(const JsonValidator& check, const nlohmann::json& item, const std::string& path,
+                     const std::filesystem::path& folder);
+
 /// @brief One item of `solids`: exactly one shape, a scale factor (default 1), a translation
 ///        [m], a rotation [degrees about x, y, z] and a path of keys {t [s], translate [m]} in
 ///        time order.

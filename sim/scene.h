@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/bubbles/bubble_settings.h"
+#include "sim/core/solid_material.h"
 #include "sim/fluid/fluid_scene.h"
 
 namespace fluidsound::sim {
@@ -56,6 +57,25 @@ struct TransferSettings {
   bool operator==(const TransferSettings&) const = default;
 };
 
+/// A rigid body that moves under gravity and contacts and sounds (docs/scene.md, "bodies";
+/// docs/solids.md): its shape where it is at t = 0, placed as a solid's.
+struct SceneBody {
+  std::string name;               ///< for messages and reports; default "body N"
+  Shape shape;                    ///< box, sphere or mesh, as a solid's
+  double scale = 1.0;             ///< [-], > 0 (meshes)
+  Vec3 rotateDegrees{};           ///< [degrees] about x, y, z (boxes and meshes)
+  Vec3 translate{};               ///< [m] (meshes)
+  std::string materialName;       ///< the table's name, or empty when given as numbers
+  SolidMaterial material;         ///< its constants (the table's, or the scene's own)
+  bool isStatic = false;          ///< fixed in place (a table, a floor); it still sounds
+  Vec3 velocity{};                ///< initial [m/s]
+  Vec3 angularVelocity{};         ///< initial [rad/s]
+  double friction = 0.5;          ///< Coulomb μ, ≥ 0 (the pair's is the product)
+  double restitution = 0.3;       ///< e in [0, 1] (the pair's is the product)
+  int resolution = 32;            ///< voxels along its longest side, for its modes
+  bool operator==(const SceneBody&) const = default;
+};
+
 /// A whole scene: the fluid's part and the rest.
 struct Scene : FluidScene {
   std::filesystem::path file;       ///< the scene file (for messages); paths inside are resolved
@@ -64,6 +84,7 @@ struct Scene : FluidScene {
   std::optional<std::filesystem::path> hrtf;  ///< the heads' SOFA file ("audio.hrtf"); default MIT KEMAR
   BubbleSettings bubbles;           ///< the "bubbles" block (docs/bubbles.md); defaults if absent
   TransferSettings transfer;        ///< the "transfer" block; defaults if absent
+  std::vector<SceneBody> bodies;    ///< the "bodies" array (docs/solids.md); none if absent
   bool operator==(const Scene&) const = default;
 };
 

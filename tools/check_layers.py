@@ -55,6 +55,8 @@ IO_RECORD_HEADERS = {
     "sim/cache_bubbles.h": "the frames of a liquid cache as the bubble model reads them: io implements its LiquidFrameSource",
     "acoustics/modal/modal_analysis.h": "a body's modal model, cached on disk as KEY.modes",
     "acoustics/modal/voxel_solid.h": "the surface faces a modal model holds (part of the cached record)",
+    "acoustics/modal/solid_material.h": "the named materials a scene body's `material` names, checked as `bodies` is read",
+    "sim/core/solid_material.h": "a body's material constants, part of the scene record",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')
 LINK_KEYWORDS = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE",

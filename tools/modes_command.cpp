@@ -24,13 +24,13 @@ namespace {
 
 std::string materialNames() {
   std::string names;
-  for (const acoustics::SolidMaterial& m : acoustics::solidMaterials())
+  for (const acoustics::NamedSolidMaterial& m : acoustics::solidMaterials())
     names += (names.empty() ? "" : ", ") + std::string(m.name);
   return names;
 }
 
-acoustics::SolidMaterial chosenMaterial(const ModesOptions& o) {
-  acoustics::SolidMaterial material = *acoustics::findSolidMaterial(o.material);
+SolidMaterial chosenMaterial(const ModesOptions& o) {
+  SolidMaterial material = *acoustics::findSolidMaterial(o.material);
   if (o.density) material.density = *o.density;
   if (o.youngsModulus) material.youngsModulus = *o.youngsModulus;
   if (o.poissonsRatio) material.poissonsRatio = *o.poissonsRatio;
@@ -92,7 +92,7 @@ int runModesCommand(const ModesOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const sim::TriangleMesh mesh = io::readMeshFile(o.mesh);
   io::requireClosedMesh(mesh, o.mesh);
-  const acoustics::SolidMaterial material = chosenMaterial(o);
+  const SolidMaterial material = chosenMaterial(o);
   if (const auto problem = acoustics::solidMaterialProblem(material))
     throw CLI::ValidationError("--material", std::string(*problem));
   const acoustics::VoxelSolid solid = voxeliseBody(mesh, o.scale, o.resolution);

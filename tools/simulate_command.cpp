@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -75,6 +76,11 @@ SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
   sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   io::loadSceneMeshes(scene);
+  if (!scene.bodies.empty() && !o.common.quiet)
+    std::fprintf(stderr,
+                 "fluidsound: note: %s: its %zu bodies are read and checked, but this version does not yet move "
+                 "or sound them (docs/solids.md: `fluidsound modes` lists a body's modes)\n",
+                 o.scene.c_str(), scene.bodies.size());
   const FrameRange range = parseFrameRange(o.frames, sim::lastSceneFrame(scene));
   const std::filesystem::path out = o.output;
   prepareFrameFolder(out, range, o.ply, o.common.quiet);

@@ -13,21 +13,21 @@ namespace {
 // ν 0.2–0.3), and its damping is chosen to give a loss factor of about 0.01 at 1 kHz, between
 // ceramic's and wood's (documented as a choice in docs/solids.md).
 constexpr std::array kMaterials{
-    SolidMaterial{"steel", 7850.0, 2.0e11, 0.29, 5.0, 3e-8},
-    SolidMaterial{"glass", 2600.0, 6.2e10, 0.20, 1.0, 1e-7},
-    SolidMaterial{"ceramic", 2700.0, 7.2e10, 0.19, 6.0, 1e-7},
-    SolidMaterial{"wood", 750.0, 1.1e10, 0.25, 60.0, 2e-6},
-    SolidMaterial{"stone", 2650.0, 5.0e10, 0.25, 20.0, 1e-6},
-    SolidMaterial{"plastic", 1070.0, 1.4e9, 0.35, 30.0, 1e-6},
+    NamedSolidMaterial{"steel", {7850.0, 2.0e11, 0.29, 5.0, 3e-8}},
+    NamedSolidMaterial{"glass", {2600.0, 6.2e10, 0.20, 1.0, 1e-7}},
+    NamedSolidMaterial{"ceramic", {2700.0, 7.2e10, 0.19, 6.0, 1e-7}},
+    NamedSolidMaterial{"wood", {750.0, 1.1e10, 0.25, 60.0, 2e-6}},
+    NamedSolidMaterial{"stone", {2650.0, 5.0e10, 0.25, 20.0, 1e-6}},
+    NamedSolidMaterial{"plastic", {1070.0, 1.4e9, 0.35, 30.0, 1e-6}},
 };
 
 }  // namespace
 
-std::span<const SolidMaterial> solidMaterials() { return kMaterials; }
+std::span<const NamedSolidMaterial> solidMaterials() { return kMaterials; }
 
 std::optional<SolidMaterial> findSolidMaterial(std::string_view name) {
-  for (const SolidMaterial& material : kMaterials)
-    if (material.name == name) return material;
+  for (const NamedSolidMaterial& named : kMaterials)
+    if (named.name == name) return named.material;
   return std::nullopt;
 }
 

@@ -1,5 +1,6 @@
-// acoustics/modal/solid_material.h — the elastic and damping constants of a sounding solid, and the
-// named table a scene's `material` picks from (docs/solids.md, Materials).
+// acoustics/modal/solid_material.h — the named table of materials a scene's `material` picks from,
+// the checks of a material and what follows from it (docs/solids.md, Materials; the record itself
+// is sim/core/solid_material.h).
 // Rayleigh damping in one convention throughout: C = a_M·M + b_K·K, so a mode of undamped angular
 // frequency ω decays at d = (a_M + b_K·ω²)/2 [1/s] (shared solids.md §1.1 and T6).
 #pragma once
@@ -8,21 +9,19 @@
 #include <span>
 #include <string_view>
 
+#include "sim/core/solid_material.h"
+
 namespace fluidsound::acoustics {
 
-/// An isotropic, linearly elastic solid with Rayleigh damping.
-struct SolidMaterial {
-  std::string_view name;     ///< the table's name ("steel"), or empty for a scene's own values
-  double density;            ///< ρ [kg/m³], > 0
-  double youngsModulus;      ///< E [Pa], > 0
-  double poissonsRatio;      ///< ν [-], in (−1, 0.5)
-  double rayleighMass;       ///< a_M [1/s], ≥ 0: the mass-proportional damping coefficient
-  double rayleighStiffness;  ///< b_K [s], ≥ 0: the stiffness-proportional damping coefficient
+/// A material of the table, by name.
+struct NamedSolidMaterial {
+  std::string_view name;
+  SolidMaterial material;
 };
 
 /// The named materials: steel, glass, ceramic, wood, stone, plastic (values and their sources in
 /// docs/solids.md, Materials).
-std::span<const SolidMaterial> solidMaterials();
+std::span<const NamedSolidMaterial> solidMaterials();
 
 /// The named material, or nothing for an unknown name.
 std::optional<SolidMaterial> findSolidMaterial(std::string_view name);

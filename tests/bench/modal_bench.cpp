@@ -57,7 +57,7 @@ BENCHMARK(BM_ModalAnalysisBlock)->Arg(10)->Arg(50)->Iterations(1)->Unit(benchmar
 /// surface node; 1 000 impacts at random times over 10 s, a 48 kHz render of 10 s.
 void BM_ModalImpacts(benchmark::State& state) {
   constexpr std::size_t kModes = 1000, kImpacts = 1000, kSamples = 480000;
-  const SolidMaterial steel = *findSolidMaterial("steel");
+  const fluidsound::SolidMaterial steel = *findSolidMaterial("steel");
   ModalModel model;
   std::mt19937_64 random(7);
   std::normal_distribution<double> shape(0.0, 1.0);

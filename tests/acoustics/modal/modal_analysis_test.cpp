@@ -235,7 +235,6 @@ TEST(ModalAnalysis, FreeSquarePlateRingsAtLeissasFrequencies) {
   // about ½(kt)²/12·(1 + 2/(κ(1−ν))), k² = λ/a², 0.1–0.3 % here); the 34.80 pair is degenerate by
   // the square's symmetry, which the voxel grid keeps: 1e-6.
   SolidMaterial material = steel();
-  material.name = "";
   material.poissonsRatio = 0.3;
   constexpr double kSide = 0.1, kThickness = 0.002;
   ModalSettings settings;
