@@ -98,12 +98,21 @@ std::vector<float> synthesizeModalImpacts(const ModalModel& model, std::span<con
         energy[voiceOf[j]] += std::norm(c);
       }
       const double since = static_cast<double>(start) * dt - centre(order[next]);
+      // The event's peak: its loudest oscillator. Quieter than truncation × peak, an oscillator
+      // is not excited by it; one it excites stops below truncation × the loudest event's peak.
+      double peak = 0.0;
+      for (double e : energy) peak = std::max(peak, e);
+      const double eventFloor = settings.truncation * std::sqrt(peak);
       for (std::size_t v = 0; v < voices; ++v) {
         if (energy[v] == 0.0) continue;
         const double size = std::sqrt(energy[v]);  // = |coherent| for a group of one
+        if (size < eventFloor) {
+          ++stats.modesSkipped;
+          continue;
+        }
         const std::complex<double> phase = std::abs(coherent[v]) > 0.0 ? coherent[v] / std::abs(coherent[v]) : 1.0;
         state[v] += size * phase * std::exp(rotor(v) * since);
-        floor[v] = std::max(floor[v], settings.truncation * size);
+        floor[v] = std::max(floor[v], eventFloor);
         active[v] = 1;
       }
       ++next;

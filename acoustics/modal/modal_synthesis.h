@@ -41,8 +41,10 @@ double modalDisplacement(const ModalModel& model, std::size_t mode, const ModalI
 
 struct ModalSynthesisSettings {
   double sampleRate = 48000.0;  ///< [Hz]
-  /// A mode falls silent once its amplitude is below this fraction of the largest modal amplitude
-  /// any impact gave it (the thesis's 1e-5, §3.52); 0 keeps every mode to the end.
+  /// Per event (the thesis's 1e-5, §3.52, made relative to the event): an impact does not excite
+  /// an oscillator whose amplitude through its gain is below this fraction of the event's loudest,
+  /// and an oscillator falls silent once below this fraction of the loudest event that excited
+  /// it; 0 keeps every mode to the end.
   double truncation = 1e-5;
   /// Modes grouped by groupIndistinguishableModes (mode_compression.h): each group one oscillator
   /// at its lead's frequency and decay. An impact gives group g the complex amplitude of magnitude
@@ -56,6 +58,7 @@ struct ModalSynthesisSettings {
 struct ModalSynthesisStatistics {
   std::size_t oscillatorSamples = 0;  ///< mode-samples advanced (the cost)
   std::size_t modesTruncated = 0;     ///< times a mode fell below the truncation floor and stopped
+  std::size_t modesSkipped = 0;       ///< times an impact left a mode out: below the floor from the start
 };
 
 /// @brief `samples` samples of Σ_j Im(g_j·z_j), where q_j = Im z_j is mode j's displacement: the
