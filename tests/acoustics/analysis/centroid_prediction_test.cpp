@@ -64,7 +64,7 @@ TEST(CentroidPrediction, OneDeepBubbleIsItsDampedSineLine) {
   const SynthesisSettings s = defaultSettings();
   const OscillatorConstants c = deepConstants(1e-3, s);
   BubbleTrackSet set;
-  set.bubbles.push_back({1e-3, 0.01, std::nullopt, {}});
+  set.bubbles.push_back({1e-3, 0.01, std::nullopt, {}, {}});
   const std::vector<PredictedSpectrum> p = predictedSpectra(set, s, kAudible);
   ASSERT_EQ(p.size(), 1u);
   const BandSpectrum line =
@@ -150,13 +150,13 @@ TEST(CentroidPrediction, WeightsEachChannelByItsTransferSquared) {
 TEST(CentroidPrediction, LeavesOutWhatTheSynthesizerLeavesOut) {
   SynthesisSettings s = defaultSettings();
   BubbleTrackSet alone;
-  alone.bubbles = {{2e-3, 0.095, std::nullopt, {}}};
+  alone.bubbles = {{2e-3, 0.095, std::nullopt, {}, {}}};
   const PredictedSpectrum endless = predictedSpectra(alone, s, kAudible).at(0);
   s.duration = 0.1;
   BubbleTrackSet set;
-  set.bubbles = {{0.1e-3, 0.0, std::nullopt, {}},
-                 {1e-3, 0.2, std::nullopt, {}},
-                 {2e-3, 0.095, std::nullopt, {}}};
+  set.bubbles = {{0.1e-3, 0.0, std::nullopt, {}, {}},
+                 {1e-3, 0.2, std::nullopt, {}, {}},
+                 {2e-3, 0.095, std::nullopt, {}, {}}};
   const PredictedSpectrum p = predictedSpectra(set, s, kAudible).at(0);
   EXPECT_EQ(p.bubbles, 1);
   const double kept = -std::expm1(-2.0 * deepConstants(2e-3, s).decayRate * 0.005);

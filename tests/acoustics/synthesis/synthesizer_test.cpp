@@ -107,7 +107,7 @@ TEST(Synthesizer, DeepBubbleEqualsAnalyticDampedSineForOffGridBirth) {
   const double radius = 1e-3, birth = 0.0123456;
   const OscillatorConstants c = deepConstants(radius, s);
   BubbleTrackSet set;
-  set.bubbles.push_back({radius, birth, std::nullopt, {}});
+  set.bubbles.push_back({radius, birth, std::nullopt, {}, {}});
   const std::vector<float> x = synthesize(set, s).channels.at(0);
   const double wd = 2.0 * std::numbers::pi * dampedFrequency(c);
   double worst = 0.0;
@@ -279,8 +279,8 @@ INSTANTIATE_TEST_SUITE_P(Synthesizer, ThreadCountThroughKernel, ::testing::Value
 TEST(Synthesizer, ExtremeInputsGiveFiniteOutput) {
   SynthesisSettings s = defaultSettings();
   BubbleTrackSet set = manyMovingBubbles(100000, 2.0, 11);
-  set.bubbles.push_back({10e-6, 0.1, std::nullopt, {}});
-  set.bubbles.push_back({5e-2, 0.2, std::nullopt, {}});
+  set.bubbles.push_back({10e-6, 0.1, std::nullopt, {}, {}});
+  set.bubbles.push_back({5e-2, 0.2, std::nullopt, {}, {}});
   BubbleTrack shallow = risingBubble(1e-3, 0.3, 1.3e-3, 1.3e-3, 2);
   set.bubbles.push_back(shallow);
   s.duration = 3.0;
@@ -299,7 +299,7 @@ TEST(Synthesizer, DropsOnlyBubblesAboveNyquist) {
     SynthesisSettings s = defaultSettings();
     s.sampleRate = rate;
     BubbleTrackSet set;
-    set.bubbles = {{below, 0.0, std::nullopt, {}}, {above, 0.0, std::nullopt, {}}};
+    set.bubbles = {{below, 0.0, std::nullopt, {}, {}}, {above, 0.0, std::nullopt, {}, {}}};
     const SynthesisReport r = synthesize(set, s).report;
     EXPECT_EQ(r.bubblesAboveNyquist, 1) << rate << " Hz";
     EXPECT_EQ(r.bubblesRendered, 1) << rate << " Hz";
@@ -310,7 +310,7 @@ TEST(Synthesizer, DropsOnlyBubblesAboveNyquist) {
 TEST(Synthesizer, DefaultDurationEndsWhenLastBubbleHasDecayed) {
   const SynthesisSettings s = defaultSettings();
   BubbleTrackSet set;
-  set.bubbles = {{1e-3, 0.5, std::nullopt, {}}, {2e-3, 0.1, std::nullopt, {}}};
+  set.bubbles = {{1e-3, 0.5, std::nullopt, {}, {}}, {2e-3, 0.1, std::nullopt, {}, {}}};
   const SynthesisReport r = synthesize(set, s).report;
   const double expected = std::max(0.5 + 10.3616 / deepConstants(1e-3, s).decayRate,
                                    0.1 + 10.3616 / deepConstants(2e-3, s).decayRate);
