@@ -67,11 +67,7 @@ sim::SceneBody readSceneBody(const JsonValidator& check, const json& item, const
   body.name = "body " + std::to_string(index);
   if (const json* name = findMember(item, "name")) body.name = check.nonEmptyText(*name, memberPath(path, "name"), "a name");
   body.shape = readShape(check, item, path, folder);
-  body.scale = check.optionalNumber(item, path, "scale", 1.0, "a number > 0 (scale factor)", positive);
-  if (const json* translate = findMember(item, "translate"))
-    body.translate = check.vector(*translate, memberPath(path, "translate"), "metres");
-  if (const json* rotate = findMember(item, "rotate"))
-    body.rotateDegrees = check.vector(*rotate, memberPath(path, "rotate"), "degrees about x, y, z");
+  readPlacement(check, item, path, body.scale, body.translate, body.rotateDegrees);
   const json* material = findMember(item, "material");
   if (material == nullptr)
     check.fail(memberPath(path, "material"), "a material name (" + materialNames() + ") or an object of its constants",

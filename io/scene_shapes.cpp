@@ -223,6 +223,15 @@ sim::Emitter readEmitter(const JsonValidator& check, const json& item, const std
   return e;
 }
 
+void readPlacement(const JsonValidator& check, const json& item, const std::string& path, double& scale,
+                   Vec3& translate, Vec3& rotateDegrees) {
+  scale = check.optionalNumber(item, path, "scale", 1.0, "a number > 0 (scale factor)", positive);
+  if (const json* offset = findMember(item, "translate"))
+    translate = check.vector(*offset, memberPath(path, "translate"), "metres");
+  if (const json* rotate = findMember(item, "rotate"))
+    rotateDegrees = check.vector(*rotate, memberPath(path, "rotate"), "degrees about x, y, z");
+}
+
 sim::Solid readSolid(const JsonValidator& check, const json& item, const std::string& path,
                      const fs::path& folder) {
   check.requireObject(item, path, "an object with one of box, sphere or mesh");
@@ -230,11 +239,7 @@ sim::Solid readSolid(const JsonValidator& check, const json& item, const std::st
                           {"box", "sphere", "mesh", "scale", "translate", "rotate", "path"});
   sim::Solid s;
   s.shape = readShape(check, item, path, folder);
-  s.scale = check.optionalNumber(item, path, "scale", 1.0, "a number > 0 (scale factor)", positive);
-  if (const json* translate = findMember(item, "translate"))
-    s.translate = check.vector(*translate, memberPath(path, "translate"), "metres");
-  if (const json* rotate = findMember(item, "rotate"))
-    s.rotateDegrees = check.vector(*rotate, memberPath(path, "rotate"), "degrees about x, y, z");
+  readPlacement(check, item, path, s.scale, s.translate, s.rotateDegrees);
   if (const json* keys = check.optionalArray(
           item, path, "path", "an array of keys {t (seconds), translate (metres)}")) {
     const std::string keysPath = memberPath(path, "path");

@@ -37,6 +37,11 @@ sim::Emitter readEmitter(const JsonValidator& check, const nlohmann::json& item,
                          const std::string& path, const sim::TimeSettings& time,
                          const sim::Domain& domain);
 
+/// @brief A solid's or body's placement keys: `scale` (> 0, default 1), `translate` [m],
+///        `rotate` [degrees about x, y, z] (zero if absent).
+void readPlacement(const JsonValidator& check, const nlohmann::json& item, const std::string& path, double& scale,
+                   Vec3& translate, Vec3& rotateDegrees);
+
 /// @brief The one shape of a liquid, solid or body item: exactly one of "box", "sphere", "mesh"
 ///        (a mesh path resolved against `folder`; the file is opened, not read).
 sim::Shape readShape(const JsonValidator& check, const nlohmann::json& item, const std::string& path,

@@ -113,14 +113,7 @@ ModalModel analyseModes(const VoxelSolid& solid, const SolidMaterial& material,
                                  : 0.0);
   }
 
-  model.surfaceNodes = surfaceNodes(solid, mesh);
-  for (const int node : model.surfaceNodes) model.surfacePositions.push_back(mesh.positions[node]);
-  model.voxelSize = solid.voxelSize;
-  model.surfaceFaces = surfaceFaces(solid, mesh);
-  for (SurfaceFace& face : model.surfaceFaces)
-    for (int& node : face.nodes)
-      node = static_cast<int>(std::lower_bound(model.surfaceNodes.begin(), model.surfaceNodes.end(), node) -
-                              model.surfaceNodes.begin());
+  setModelSurface(model, solid, mesh);
   std::vector<int> keptDof(3 * mesh.positions.size(), -1);
   for (int d = 0; d < dofs; ++d) keptDof[static_cast<std::size_t>(matrices.nodeDofs[d])] = d;
   model.surfaceShapes.setZero(3 * static_cast<Eigen::Index>(model.surfaceNodes.size()),
@@ -134,6 +127,18 @@ ModalModel analyseModes(const VoxelSolid& solid, const SolidMaterial& material,
             static_cast<float>(pairs.eigenvectors(dof, kept[m]));
     }
   return model;
+}
+
+void setModelSurface(ModalModel& model, const VoxelSolid& solid, const HexMesh& mesh) {
+  model.surfaceNodes = surfaceNodes(solid, mesh);
+  model.surfacePositions.clear();
+  for (const int node : model.surfaceNodes) model.surfacePositions.push_back(mesh.positions[node]);
+  model.voxelSize = solid.voxelSize;
+  model.surfaceFaces = surfaceFaces(solid, mesh);
+  for (SurfaceFace& face : model.surfaceFaces)
+    for (int& node : face.nodes)
+      node = static_cast<int>(std::lower_bound(model.surfaceNodes.begin(), model.surfaceNodes.end(), node) -
+                              model.surfaceNodes.begin());
 }
 
 std::array<double, 3> surfaceMotionShares(const ModalModel& model, std::size_t mode) {

@@ -51,6 +51,10 @@ struct ModalModel {
   friend bool operator==(const ModalModel&, const ModalModel&) = default;
 };
 
+/// @brief Fills `model`'s surface from the solid and its mesh: the surface nodes, their positions,
+///        the voxel size and the surface faces with their corners as indices into surfaceNodes.
+void setModelSurface(ModalModel& model, const VoxelSolid& solid, const HexMesh& mesh);
+
 /// @brief How mode j moves the surface, per axis: the shares of Σ_s |φ_j(s)|² along x, y and z
 ///        over the surface nodes (they sum to 1): a bar's bending across its thickness is almost
 ///        all along that axis, a torsion splits between the two across the bar.

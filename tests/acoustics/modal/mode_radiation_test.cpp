@@ -17,18 +17,10 @@ constexpr double kPi = std::numbers::pi;
 /// The model of a voxel solid whose single "mode" at f [Hz] moves every surface node by shape(x).
 ModalModel withShape(const VoxelSolid& solid, double f, const auto& shape) {
   ModalModel model;
-  const HexMesh mesh = hexMesh(solid);
-  model.surfaceNodes = surfaceNodes(solid, mesh);
-  model.voxelSize = solid.voxelSize;
-  model.surfaceFaces = surfaceFaces(solid, mesh);
-  for (SurfaceFace& face : model.surfaceFaces)
-    for (int& node : face.nodes)
-      node = static_cast<int>(std::lower_bound(model.surfaceNodes.begin(), model.surfaceNodes.end(), node) -
-                              model.surfaceNodes.begin());
+  setModelSurface(model, solid, hexMesh(solid));
   model.surfaceShapes.resize(3 * static_cast<Eigen::Index>(model.surfaceNodes.size()), 1);
   for (std::size_t s = 0; s < model.surfaceNodes.size(); ++s) {
-    model.surfacePositions.push_back(mesh.positions[model.surfaceNodes[s]]);
-    const Eigen::Vector3d u = shape(model.surfacePositions.back());
+    const Eigen::Vector3d u = shape(model.surfacePositions[s]);
     for (int c = 0; c < 3; ++c) model.surfaceShapes(3 * static_cast<Eigen::Index>(s) + c, 0) = static_cast<float>(u[c]);
   }
   model.frequency = {f};

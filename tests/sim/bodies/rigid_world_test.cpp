@@ -42,17 +42,18 @@ std::vector<ContactRecord> recordsAt(const std::vector<ContactRecord>& log, doub
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+/// A steel ball of radius r [m] whose lowest point is h [m] above the floor, restitution 0.5.
+RigidBodySpec droppedSteelBall(double r, double h) {
+  return {.name = "ball", .shape = SphereShape{r}, .density = kSteel, .position = {0.0, r + h, 0.0}, .restitution = 0.5};
+}
+
 TEST(RigidWorld, DroppedSteelBallHitsAtFreeFallTimeSpeedAndImpulse) {
   // Claim: a steel ball (r = 1 cm) dropped from h = 0.2 m (lowest point above the floor) with
   // e = 0.5 first touches at t* = √(2h/g), closes at v = √(2gh) and receives m(1 + e)v in the
   // substeps of that impact, at a point on the floor's top face below it. References: free
   // fall and Newton's law of restitution.
   const double r = 0.01, h = 0.2;
-  RigidBodySpec ball{.name = "ball",
-                     .shape = SphereShape{r},
-                     .density = kSteel,
-                     .position = {0.0, r + h, 0.0},
-                     .restitution = 0.5};
+  const RigidBodySpec ball = droppedSteelBall(r, h);
   RigidWorld world({ball, floorSpec()});
   std::vector<ContactRecord> impact;
   while (world.time() < 0.4) {
@@ -109,11 +110,7 @@ TEST(RigidWorld, ImpactFoundBeforeTouchKeepsItsImpulse) {
   // (1 %) plus the gap's speed-up before the touch; Bullet's default speculative contact
   // lost 6.6 % here (measured; RigidWorldSettings::contactDistance).
   const double r = 0.01, h = 0.19935;
-  RigidBodySpec ball{.name = "ball",
-                     .shape = SphereShape{r},
-                     .density = kSteel,
-                     .position = {0.0, r + h, 0.0},
-                     .restitution = 0.5};
+  const RigidBodySpec ball = droppedSteelBall(r, h);
   RigidWorld world({ball, floorSpec()});
   world.advance(0.25);
   ASSERT_FALSE(world.contacts().empty());
