@@ -13,6 +13,7 @@ std::vector<RubbingContact> rubbingFromContacts(std::span<const BodyContactPoint
   struct Sum {
     double time = 0.0, impulse = 0.0, sliding = 0.0, rolling = 0.0;
     Eigen::Vector3d normal = Eigen::Vector3d::Zero(), point = Eigen::Vector3d::Zero(), anyPoint, anyNormal;
+    Eigen::Vector3d friction = Eigen::Vector3d::Zero();  // Σ of the points' friction impulses [N·s]
   };
   struct Open {
     long long lastSubstep = 0;
@@ -34,11 +35,13 @@ std::vector<RubbingContact> rubbingFromContacts(std::span<const BodyContactPoint
       sum.rolling += p.normalImpulse * p.rollingSpeed;
       sum.normal += p.normalImpulse * p.normal;
       sum.point += p.normalImpulse * p.localPoint;
+      sum.friction += p.impulse - p.normalImpulse * p.normal;
     }
     for (const auto& [other, sum] : sums) {
       RubbingSample sample;
       sample.time = sum.time;
       sample.normalForce = sum.impulse / substep;
+      sample.friction = sum.friction / substep;
       const double w = sum.impulse > 0.0 ? 1.0 / sum.impulse : 0.0;
       const double sliding = sum.sliding * w, rolling = sum.rolling * w;
       sample.speed = sliding + rolling;

@@ -20,6 +20,7 @@ struct RubbingContact {
 
 /// @brief The touches in a body's contact points (in time order), one per other body and run of
 ///        consecutive substeps in which they touch. Each substep: the normal force Σ J_n / Δt, the
+///        friction force (the impulses' tangential part / Δt), the
 ///        impulse-weighted speed over the surface (sliding plus rolling speed), the normal, the
 ///        surface node nearest the impulse-weighted point; rolling when its rolling speed exceeds
 ///        its sliding speed.

@@ -41,6 +41,7 @@ struct RubbingSample {
   double normalForce = 0.0;                             ///< mean normal force over it [N], ≥ 0
   double speed = 0.0;                                   ///< the contact's speed over the surface [m/s]
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< into the sounding body, its frame
+  Eigen::Vector3d friction = Eigen::Vector3d::Zero();  ///< mean friction force on the body [N], its frame
   std::size_t surfaceNode = 0;                          ///< where it touches (ModalModel::surfaceNodes)
   bool rolling = false;                                 ///< rolling (true) or sliding: which stem it sounds in
 };

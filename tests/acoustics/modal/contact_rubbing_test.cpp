@@ -3,6 +3,7 @@
 // only while it slides; bodies at rest make none"), and a rolling steel ball's force spectrum
 // follows its speed (docs/solids.md, Rolling and sliding).
 #include "acoustics/modal/contact_rubbing.h"
+#include "acoustics/modal/stick_slip.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +45,7 @@ double rms(const std::vector<Eigen::Vector3f>& f, std::size_t from, std::size_t 
 
 // A 4 × 2 × 4 cm steel box pushed at 1 m/s across the plate with μ = 0.3 decelerates at μg and
 // stops after v/(μg) = 0.34 s: one touch, all of it sliding; its rubbing force after 0.4 s below
-// 1e-3 of its RMS over 0.05–0.3 s.
+// 1e-3 of its RMS over 0.05–0.3 s, and its stick–slip breaks end with the slide.
 TEST(ContactRubbing, PushedBoxRubsOnlyWhileItSlides) {
   sim::RigidBodySpec box{"box", sim::BoxShape{{0.02, 0.01, 0.02}}, 7850.0, false};
   box.position = {-0.1, 0.005 + 0.01, 0.0};
@@ -62,6 +63,13 @@ TEST(ContactRubbing, PushedBoxRubsOnlyWhileItSlides) {
   EXPECT_GT(sliding, 0.01);  // κ·m·g ≈ 0.1·0.126 kg·9.81 m/s² = 0.12 N, times the speed's weight
   EXPECT_LT(resting, 1e-3 * sliding);
   for (std::size_t n = 2400; n < 14400; ++n) ASSERT_EQ(force.rolling[n], 0) << n;
+  // Its stick–slip breaks (stick_slip.h): only while it slides, ever further apart as it slows
+  // (every a₁/v²), each pushing the plate along the motion (the friction on the plate).
+  const std::vector<ModalImpact> slips = stickSlipImpacts(touch.substeps, {});
+  ASSERT_GT(slips.size(), 10u);
+  EXPECT_LT(slips.back().time, 0.35);
+  EXPECT_GT(slips.back().time - slips[slips.size() - 2].time, 4.0 * (slips[1].time - slips[0].time));
+  for (const ModalImpact& slip : slips) EXPECT_GT(slip.impulse.x(), 0.0);
 }
 
 /// Spectral centroid [Hz] of the y component.
