@@ -323,7 +323,13 @@ void checkSurfaceTree(HeaderReader& in, const std::string& grid, const std::stri
     checkInternalNode(in, child, compression, 5, leaves);
     roots[{origin[0], origin[1], origin[2]}] = std::move(leaves);
   }
-  in.seek(blockOffset);
+  // OpenVDB reads the leaves' values right after the topology (io::Archive::readGrid), not at
+  // the descriptor's block offset: the two must agree, or the values checked would not be those
+  // read (a fuzzed file put its block offset 96 bytes past the topology's end, and OpenVDB
+  // allocated a 0x7f…-byte blosc buffer from the bytes between).
+  if (in.position() != blockOffset)
+    in.fail(grid + " block offset", "the end of the grid's topology (" + std::to_string(in.position()) + ")",
+            std::to_string(blockOffset));
   in.limitTo(endOffset);
   std::int64_t index = 0;
   for (const auto& [origin, leaves] : roots)

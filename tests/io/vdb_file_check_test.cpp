@@ -113,6 +113,21 @@ TEST(VdbFileCheck, RefusesGridOffsetsOutOfOrder) {
   EXPECT_EQ(error.field(), "grid 0 offsets");
 }
 
+// Claim: a block offset past the end of the grid's topology is refused naming it. OpenVDB reads
+// the leaves' values right after the topology whatever the offset says; a fuzzed file
+// (tests/fuzz/corpus/frame_vdb/block_offset_past_topology.vdb) had the check validate the bytes at
+// the offset while OpenVDB allocated a 0x7f…-byte blosc buffer from the bytes before it. Here the
+// offset moved one byte on, within the file and still before the end offset.
+TEST(VdbFileCheck, RefusesABlockOffsetPastTheTopology) {
+  test::TempFolder folder;
+  std::string bytes = frameBytes(folder);
+  const std::size_t offsets = firstDescriptor(bytes) + 4 + 7 + 4 + 16 + 4;
+  ASSERT_EQ(bytes.substr(firstDescriptor(bytes) + 4, 7), "surface");
+  put<std::int64_t>(bytes, offsets + 8, get<std::int64_t>(bytes, offsets + 8) + 1);  // block offset
+  const InputError error = frameError(folder, bytes);
+  EXPECT_EQ(error.field(), "grid 0 block offset");
+}
+
 // Claim: a string length beyond the file is refused naming the string, not allocated.
 TEST(VdbFileCheck, RefusesAStringLongerThanTheFile) {
   test::TempFolder folder;
