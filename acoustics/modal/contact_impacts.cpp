@@ -18,49 +18,52 @@ std::size_t nearestSurfaceNode(const ModalModel& model, const Eigen::Vector3d& p
   return best;
 }
 
+std::vector<SubstepTouch> substepTouches(std::span<const BodyContactPoint> points, double substep) {
+  if (!(substep > 0.0)) throw std::invalid_argument("substepTouches: the substep must be > 0");
+  std::vector<SubstepTouch> touches;
+  for (std::size_t begin = 0; begin < points.size();) {
+    const long long step = std::llround(points[begin].time / substep);
+    std::map<int, SubstepTouch> byOther;  // ordered: deterministic
+    std::size_t end = begin;
+    for (; end < points.size() && std::llround(points[end].time / substep) == step; ++end) {
+      if (end > begin && points[end].time < points[end - 1].time)
+        throw std::invalid_argument("substepTouches: contact points out of time order");
+      SubstepTouch& touch = byOther[points[end].other];
+      touch.substep = step, touch.other = points[end].other;
+      touch.points.push_back(&points[end]);
+    }
+    if (end < points.size() && points[end].time < points[end - 1].time)
+      throw std::invalid_argument("substepTouches: contact points out of time order");
+    for (auto& [other, touch] : byOther) touches.push_back(std::move(touch));
+    begin = end;
+  }
+  return touches;
+}
+
 std::vector<ModalImpact> impactsFromContacts(std::span<const BodyContactPoint> points, const ModalModel& model,
                                              const ImpactDetection& detection,
                                              const std::function<double(const BodyContactPoint&, double)>& contactDuration) {
-  if (!(detection.substep > 0.0) || !(detection.minimumSpeed >= 0.0))
-    throw std::invalid_argument("impactsFromContacts: substep > 0 and minimumSpeed >= 0");
-  // The substep of each point, by its end time.
-  const auto substepOf = [&](double time) { return std::llround(time / detection.substep); };
-  struct Touch {
-    const BodyContactPoint* first = nullptr;
-    double closing = 0.0;  // the fastest closing speed of the pair's points [m/s]
-    Eigen::Vector3d impulse = Eigen::Vector3d::Zero(), weightedPoint = Eigen::Vector3d::Zero();
-    double weight = 0.0;
-  };
+  if (!(detection.minimumSpeed >= 0.0)) throw std::invalid_argument("impactsFromContacts: minimumSpeed >= 0");
   std::map<int, long long> lastClosing;  // other → the last substep it closed faster than ε
   std::vector<ModalImpact> impacts;
-  for (std::size_t begin = 0; begin < points.size();) {
-    const long long substep = substepOf(points[begin].time);
-    std::size_t end = begin;
-    std::map<int, Touch> touches;  // this substep's, by other body (ordered: deterministic)
-    for (; end < points.size() && substepOf(points[end].time) == substep; ++end) {
-      const BodyContactPoint& p = points[end];
-      if (end > begin && p.time < points[end - 1].time)
-        throw std::invalid_argument("impactsFromContacts: contact points out of time order");
-      Touch& touch = touches[p.other];
-      if (!touch.first) touch.first = &p;
-      touch.closing = std::max(touch.closing, p.normalSpeed);
-      touch.impulse += p.impulse;
-      const double w = p.impulse.norm();
-      touch.weightedPoint += w * p.localPoint;
-      touch.weight += w;
+  for (const SubstepTouch& touch : substepTouches(points, detection.substep)) {
+    double closing = 0.0, weight = 0.0;  // the fastest closing speed of the pair's points [m/s]
+    Eigen::Vector3d impulse = Eigen::Vector3d::Zero(), weightedPoint = Eigen::Vector3d::Zero();
+    for (const BodyContactPoint* p : touch.points) {
+      closing = std::max(closing, p->normalSpeed);
+      impulse += p->impulse;
+      weightedPoint += p->impulse.norm() * p->localPoint;
+      weight += p->impulse.norm();
     }
-    for (const auto& [other, touch] : touches) {
-      if (!(touch.closing > detection.minimumSpeed)) continue;
-      const auto last = lastClosing.find(other);
-      const bool fresh = last == lastClosing.end() || last->second < substep - 1;
-      lastClosing[other] = substep;
-      if (!fresh) continue;
-      const Eigen::Vector3d where = touch.weight > 0.0 ? Eigen::Vector3d(touch.weightedPoint / touch.weight)
-                                                       : touch.first->localPoint;
-      impacts.push_back({touch.first->time - detection.substep, nearestSurfaceNode(model, where), touch.impulse,
-                         contactDuration(*touch.first, touch.closing)});
-    }
-    begin = end;
+    if (!(closing > detection.minimumSpeed)) continue;
+    const auto last = lastClosing.find(touch.other);
+    const bool fresh = last == lastClosing.end() || last->second < touch.substep - 1;
+    lastClosing[touch.other] = touch.substep;
+    if (!fresh) continue;
+    const BodyContactPoint& first = *touch.points.front();
+    const Eigen::Vector3d where = weight > 0.0 ? Eigen::Vector3d(weightedPoint / weight) : first.localPoint;
+    impacts.push_back({first.time - detection.substep, nearestSurfaceNode(model, where), impulse,
+                       contactDuration(first, closing)});
   }
   return impacts;
 }

@@ -32,6 +32,18 @@ struct BodyContactPoint {
   double rollingSpeed = 0.0;
 };
 
+/// The points one substep of the log holds with one other body.
+struct SubstepTouch {
+  long long substep = 0;                        ///< its index: round(time / substep length)
+  int other = 0;                                ///< the body or wall touched
+  std::vector<const BodyContactPoint*> points;  ///< in the log's order
+};
+
+/// @brief The log's points grouped by substep (in time order) and, within one, by other body
+///        (ascending: deterministic).
+/// @throws std::invalid_argument if the points are out of time order or the substep is not > 0
+std::vector<SubstepTouch> substepTouches(std::span<const BodyContactPoint> points, double substep);
+
 struct ImpactDetection {
   /// ε_imp: a touch closing slower than this is no impact [m/s] (the sample-playback paper's
   /// 0.02 m/s, shared solids.md §1.4).

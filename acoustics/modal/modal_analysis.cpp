@@ -130,11 +130,16 @@ ModalModel analyseModes(const VoxelSolid& solid, const SolidMaterial& material,
 }
 
 void setModelSurface(ModalModel& model, const VoxelSolid& solid, const HexMesh& mesh) {
-  model.surfaceNodes = surfaceNodes(solid, mesh);
+  // The faces once; the nodes are their corners (as surfaceNodes gives them).
+  model.surfaceFaces = surfaceFaces(solid, mesh);
+  model.surfaceNodes.clear();
+  for (const SurfaceFace& face : model.surfaceFaces)
+    model.surfaceNodes.insert(model.surfaceNodes.end(), face.nodes.begin(), face.nodes.end());
+  std::sort(model.surfaceNodes.begin(), model.surfaceNodes.end());
+  model.surfaceNodes.erase(std::unique(model.surfaceNodes.begin(), model.surfaceNodes.end()), model.surfaceNodes.end());
   model.surfacePositions.clear();
   for (const int node : model.surfaceNodes) model.surfacePositions.push_back(mesh.positions[node]);
   model.voxelSize = solid.voxelSize;
-  model.surfaceFaces = surfaceFaces(solid, mesh);
   for (SurfaceFace& face : model.surfaceFaces)
     for (int& node : face.nodes)
       node = static_cast<int>(std::lower_bound(model.surfaceNodes.begin(), model.surfaceNodes.end(), node) -
