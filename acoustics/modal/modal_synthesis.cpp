@@ -152,33 +152,39 @@ std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<cons
   if (!(settings.sampleRate > 0.0) || !(delay >= 0.0))
     throw std::invalid_argument("synthesizeModalForces: sample rate > 0 and delay >= 0");
   const double dt = 1.0 / settings.sampleRate;
-  std::vector<float> out(samples, 0.0f);
-  std::vector<double> drive;  // the force on mode j at each sample: φ_j(x_n)·F_n
   for (const ModalForce& force : forces) {
     if (force.surfaceNodes.size() != 1 && force.surfaceNodes.size() != force.force.size())
       throw std::invalid_argument("synthesizeModalForces: one surface node, or one per force sample");
     for (std::size_t node : force.surfaceNodes)
       if (node >= model.surfaceNodes.size()) throw std::invalid_argument("synthesizeModalForces: surface node out of range");
-    const auto first = static_cast<long long>(std::llround((force.startTime + delay) * settings.sampleRate));
-    drive.resize(force.force.size());
-    for (std::size_t j = 0; j < modes; ++j) {
-      const double omegaD = 2.0 * std::numbers::pi * model.dampedFrequency[j];
-      if (!(omegaD > 0.0)) continue;
-      const std::complex<double> s(-model.decayRate[j], omegaD), r = std::exp(s * dt);
-      const std::complex<double> step = gains[j] * (r - 1.0) / (s * omegaD);  // the gain folded in
-      for (std::size_t i = 0; i < drive.size(); ++i) {
+  }
+  std::vector<float> out(samples, 0.0f);
+  std::vector<double> drive(samples);  // mode j's force at each output sample, all forces summed: φ_j(x_n)·F_n
+  for (std::size_t j = 0; j < modes; ++j) {
+    const double omegaD = 2.0 * std::numbers::pi * model.dampedFrequency[j];
+    if (!(omegaD > 0.0)) continue;
+    std::fill(drive.begin(), drive.end(), 0.0);
+    long long first = static_cast<long long>(samples);  // the earliest driven sample
+    for (const ModalForce& force : forces) {
+      const auto start = static_cast<long long>(std::llround((force.startTime + delay) * settings.sampleRate));
+      for (std::size_t i = 0; i < force.force.size(); ++i) {
+        const long long n = start + static_cast<long long>(i);
+        if (n < 0) continue;
+        if (n >= static_cast<long long>(samples)) break;
         const std::size_t node = force.surfaceNodes[force.surfaceNodes.size() == 1 ? 0 : i];
-        const Eigen::Vector3f shape = model.surfaceShapes.block<3, 1>(static_cast<Eigen::Index>(3 * node), static_cast<Eigen::Index>(j));
-        drive[i] = static_cast<double>(shape.dot(force.force[i]));
+        const Eigen::Vector3f shape =
+            model.surfaceShapes.block<3, 1>(static_cast<Eigen::Index>(3 * node), static_cast<Eigen::Index>(j));
+        drive[static_cast<std::size_t>(n)] += static_cast<double>(shape.dot(force.force[i]));
+        first = std::min(first, n);
       }
-      std::complex<double> z = 0.0;
-      // Driven over the force's samples, then ringing out to the end of the output.
-      for (long long n = std::max(first, 0LL); n < static_cast<long long>(samples); ++n) {
-        const long long i = n - first;
-        out[static_cast<std::size_t>(n)] += static_cast<float>(z.imag());
-        z *= r;
-        if (i < static_cast<long long>(drive.size())) z += step * drive[static_cast<std::size_t>(i)];
-      }
+    }
+    const std::complex<double> s(-model.decayRate[j], omegaD), r = std::exp(s * dt);
+    const std::complex<double> step = gains[j] * (r - 1.0) / (s * omegaD);  // the gain folded in
+    std::complex<double> z = 0.0;
+    // One pass per mode, driven by every force and ringing out to the end of the output.
+    for (std::size_t n = static_cast<std::size_t>(first); n < samples; ++n) {
+      out[n] += static_cast<float>(z.imag());
+      z = z * r + step * drive[n];
     }
   }
   return out;

@@ -82,7 +82,8 @@ struct ModalForce {
   std::span<const std::size_t> surfaceNodes;
 };
 
-/// @brief `samples` samples of Σ_j Im(g_j·z_j) driven by forces held constant over each sample:
+/// @brief `samples` samples of Σ_j Im(g_j·z_j) driven by forces held constant over each sample (all
+///        forces summed per mode, one pass per mode):
 ///        z ← r·z + g·(r − 1)/(s·ω_d), g = φ_j(x)·F, the exact response of the damped mode to a
 ///        piecewise-constant force (q = Im z; a constant g settles at g/ω², the static
 ///        deflection). The same modes, gains and delay as synthesizeModalImpacts; a force's

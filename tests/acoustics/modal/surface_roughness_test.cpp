@@ -131,5 +131,30 @@ TEST(SurfaceRoughness, ModesFollowAForceExactly) {
   }
 }
 
+// Several forces drive each mode in one pass: two overlapping forces (at 0 and 20 ms) render as the
+// sum of their renders alone (linearity), to float rounding.
+TEST(SurfaceRoughness, ForcesAddUp) {
+  ModalModel model;
+  model.frequency = {300.0, 1200.0};
+  model.decayRate = {5.0, 20.0};
+  model.dampedFrequency = {300.0, 1200.0};
+  model.surfaceNodes = {0};
+  model.surfacePositions = {Eigen::Vector3d::Zero()};
+  model.surfaceShapes = Eigen::MatrixXf::Zero(3, 2);
+  model.surfaceShapes(1, 0) = 1.0f;
+  model.surfaceShapes(0, 1) = 0.5f;
+  const std::vector<Eigen::Vector3f> a(2400, Eigen::Vector3f(0.3f, 1.0f, 0.0f)), b(1200, Eigen::Vector3f(1.0f, -2.0f, 0.0f));
+  const std::size_t node = 0;
+  const ModalForce both[] = {{0.0, a, {&node, 1}}, {0.02, b, {&node, 1}}};
+  const std::vector<std::complex<double>> gains{1.0, std::complex<double>(0.0, 2.0)};
+  const std::vector<float> sum = synthesizeModalForces(model, both, gains, 9600, 0.0, {});
+  const std::vector<float> first = synthesizeModalForces(model, {&both[0], 1}, gains, 9600, 0.0, {});
+  const std::vector<float> second = synthesizeModalForces(model, {&both[1], 1}, gains, 9600, 0.0, {});
+  float peak = 0.0f;
+  for (float v : sum) peak = std::max(peak, std::abs(v));
+  ASSERT_GT(peak, 0.0f);
+  for (std::size_t n = 0; n < sum.size(); ++n) ASSERT_NEAR(sum[n], first[n] + second[n], 1e-5f * peak) << n;
+}
+
 }  // namespace
 }  // namespace fluidsound::acoustics
