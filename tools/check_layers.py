@@ -57,6 +57,8 @@ IO_RECORD_HEADERS = {
     "acoustics/modal/voxel_solid.h": "the surface faces a modal model holds (part of the cached record)",
     "acoustics/modal/solid_material.h": "the named materials a scene body's `material` names, checked as `bodies` is read",
     "sim/core/solid_material.h": "a body's material constants, part of the scene record",
+    "sim/core/contact_record.h": "the rigid-body stage's contact log, written and read as contacts.bin",
+    "sim/core/quaternion.h": "a body's orientation, part of every contact record in contacts.bin",
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*(?:"([^"]+)"|<([^>]+)>)')
 LINK_KEYWORDS = {"PUBLIC", "PRIVATE", "INTERFACE", "LINK_PUBLIC", "LINK_PRIVATE",

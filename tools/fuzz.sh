@@ -9,7 +9,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-${FUZZ_SECONDS:-60}}
 build="$here/build-fuzz"
-harnesses=(scene bubble_tracks bubble_tracks_fast obj_mesh ply_mesh frame_vdb)
+harnesses=(scene bubble_tracks bubble_tracks_fast obj_mesh ply_mesh frame_vdb contact_log)
 # The limits of tests/fuzz/CMakeLists.txt: an input slower than 10 s, a process above 2 GiB or
 # one allocation above 1 GiB is a bug.
 limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024)

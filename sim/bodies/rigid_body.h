@@ -5,7 +5,7 @@
 #include <string>
 #include <variant>
 
-#include "sim/bodies/quaternion.h"
+#include "sim/core/quaternion.h"
 #include "sim/core/vec3.h"
 #include "sim/fluid/triangle_mesh.h"
 

@@ -100,6 +100,7 @@ struct RigidWorld::State {
   std::vector<std::unique_ptr<btRigidBody>> objects;
   std::vector<Vec3> externalForce, externalTorque;  ///< one per spec [N], [N·m]
   std::vector<BodyMotion> motionBefore;             ///< one per spec, scratch of step()
+  std::vector<Quaternion> orientationBefore;        ///< world-from-reference, scratch of step()
   std::vector<ContactRecord> log;
   std::int64_t substeps = 0;
 
@@ -166,6 +167,8 @@ struct RigidWorld::State {
       const btRigidBody& body = *objects[i];
       motionBefore[i] = {toVec3(body.getCenterOfMassPosition()), toVec3(body.getLinearVelocity()),
                          toVec3(body.getAngularVelocity())};
+      const btQuaternion q = (body.getWorldTransform() * bodyFromReference[i]).getRotation();
+      orientationBefore[i] = {q.w(), q.x(), q.y(), q.z()};
     }
     for (int i = 0; i < bodyCount(); ++i) {
       if (specs[i].isStatic) continue;
@@ -218,6 +221,8 @@ struct RigidWorld::State {
             pointInSpecFrame(object1, point.m_localPointB, point.getPositionWorldOnB());
         record.localPointA = toVec3(swapped ? local1 : local0);
         record.localPointB = toVec3(swapped ? local0 : local1);
+        record.orientationA = orientationOf(keyA);
+        record.orientationB = orientationOf(keyB);
         log.push_back(record);
       }
     }
@@ -230,6 +235,11 @@ struct RigidWorld::State {
   /// A body's motion at the start of the substep; a wall does not move.
   BodyMotion motionOf(int key) const {
     return key < bodyCount() ? motionBefore[key] : BodyMotion{};
+  }
+
+  /// A body's world-from-reference rotation at the start of the substep; a wall's is the identity.
+  Quaternion orientationOf(int key) const {
+    return key < bodyCount() ? orientationBefore[key] : Quaternion{};
   }
 
   /// A contact point of `object` in its spec's frame, from Bullet's body frame; a wall's in
@@ -276,6 +286,7 @@ RigidWorld::RigidWorld(std::vector<RigidBodySpec> bodies, const RigidWorldSettin
   s.externalForce.assign(s.specs.size(), Vec3{});
   s.externalTorque.assign(s.specs.size(), Vec3{});
   s.motionBefore.assign(s.specs.size(), BodyMotion{});
+  s.orientationBefore.assign(s.specs.size(), Quaternion{});
 }
 
 RigidWorld::~RigidWorld() = default;

@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
-#include "sim/bodies/contact_record.h"
+#include "sim/core/contact_record.h"
 #include "sim/bodies/domain_walls.h"
-#include "sim/bodies/quaternion.h"
+#include "sim/core/quaternion.h"
 #include "sim/bodies/rigid_body.h"
 #include "sim/core/vec3.h"
 

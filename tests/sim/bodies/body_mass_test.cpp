@@ -11,7 +11,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sim/bodies/quaternion.h"
+#include "sim/core/quaternion.h"
 #include "support/body_test_meshes.h"
 
 namespace fluidsound::sim {

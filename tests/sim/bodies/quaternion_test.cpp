@@ -1,6 +1,6 @@
 // tests/sim/bodies/quaternion_test.cpp — unit-quaternion orientations: axis–angle rotations
 // by hand, composition order, and the inverse.
-#include "sim/bodies/quaternion.h"
+#include "sim/core/quaternion.h"
 
 #include <gtest/gtest.h>
 

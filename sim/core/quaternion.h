@@ -1,4 +1,4 @@
-// sim/bodies/quaternion.h — the orientation of a rigid body as a unit quaternion (the rotation
+// sim/core/quaternion.h — the orientation of a rigid body as a unit quaternion (the rotation
 // from the body's frame to world space), with the few operations the bodies stage needs.
 #pragma once
 

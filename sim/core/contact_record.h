@@ -1,8 +1,13 @@
-// sim/bodies/contact_record.h — one contact point of one substep of the rigid-body stage, as
-// logged by sim/bodies/rigid_world.h for the excitation of the modal and sample-playback sound
-// (solids.md §3.1 and §6 item 2).
+// sim/core/contact_record.h — the rigid-body stage's contact log: one record per contact point
+// per substep, as logged by sim/bodies/rigid_world.h, and the log with its bodies as written to
+// contacts.bin (io/contact_log_file.h) and read for the modal and sample-playback sound
+// (solids.md §3.1 and §6 item 2). A stage-boundary record, so it lives in sim/core.
 #pragma once
 
+#include <string>
+#include <vector>
+
+#include "sim/core/quaternion.h"
 #include "sim/core/vec3.h"
 
 namespace fluidsound::sim {
@@ -47,7 +52,32 @@ struct ContactRecord {
   int lifetime = 0;
   Vec3 localPointA{};  ///< A's contact point in A's frame (RigidBodySpec's reference frame) [m]
   Vec3 localPointB{};  ///< B's contact point in B's frame (world frame for a wall) [m]
+  /// A's and B's world-from-body rotations at the start of the substep (identity for a wall and
+  /// a static body): turn the world-frame impulse and normal into a body's own frame, where its
+  /// modes are.
+  Quaternion orientationA{};
+  Quaternion orientationB{};
   bool operator==(const ContactRecord&) const = default;
+};
+
+/// What the contact log says of one body (index = the body's place in the scene's `bodies`).
+struct ContactLogBody {
+  std::string name;     ///< the scene's name for it
+  double mass = 0.0;    ///< [kg]; 0 for a static body
+  bool isStatic = false;
+  /// The radius of curvature a Hertz contact with this body sees [m], > 0: a sphere's radius, else
+  /// half the smallest side of its bounding box (a choice: docs/solids.md, Impacts).
+  double contactRadius = 0.0;
+  bool operator==(const ContactLogBody&) const = default;
+};
+
+/// The whole contact log of a run (contacts.bin, `fluidsound.contacts/1`).
+struct ContactLog {
+  double substep = 1e-3;               ///< the rigid-body substep [s]
+  double duration = 0.0;               ///< simulated time [s]
+  std::vector<ContactLogBody> bodies;  ///< one per scene body, in order
+  std::vector<ContactRecord> records;  ///< in time order; within a substep by (bodyA, bodyB)
+  bool operator==(const ContactLog&) const = default;
 };
 
 }  // namespace fluidsound::sim
