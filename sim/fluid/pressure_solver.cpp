@@ -90,6 +90,7 @@ void PressureSolver::assemble(const MacVelocity& velocity, const PressureProblem
 
   matrix_.reset(static_cast<std::size_t>(count));
   rhs_.assign(static_cast<std::size_t>(count), 0.0);
+  std::vector<std::uint8_t> fixedLevel(static_cast<std::size_t>(count), 0);  // meets air or an open face
   const double scale = problem.dt / (problem.density * grid.cellSize * grid.cellSize);  // Δt/(ρh²)
   for (int k = 0; k < grid.cells[2]; ++k)
     for (int j = 0; j < grid.cells[1]; ++j)
@@ -107,6 +108,7 @@ void PressureSolver::assemble(const MacVelocity& velocity, const PressureProblem
             const double coefficient = w * scale;
             if (!liquidPhi.contains(n[0], n[1], n[2])) {
               matrix_.diagonal[row] += coefficient / kOpenBoundarySurfaceFraction;
+              fixedLevel[row] = 1;
             } else if (isLiquid(liquidPhi, n)) {
               // n has this open face too, so it is an unknown.
               matrix_.diagonal[row] += coefficient;
@@ -120,6 +122,7 @@ void PressureSolver::assemble(const MacVelocity& velocity, const PressureProblem
             } else {
               matrix_.diagonal[row] +=
                   coefficient / surfaceFraction(phiC, liquidPhi(n[0], n[1], n[2]));
+              fixedLevel[row] = 1;
             }
           }
         rhs_[row] =
@@ -127,6 +130,47 @@ void PressureSolver::assemble(const MacVelocity& velocity, const PressureProblem
         if (problem.targetDivergence != nullptr)
           rhs_[row] += (*problem.targetDivergence)(c[0], c[1], c[2]);
       }
+  sealedPockets_ = sealPockets(fixedLevel, scale);
+}
+
+std::int64_t PressureSolver::sealPockets(const std::vector<std::uint8_t>& fixedLevel, double scale) {
+  // A pocket of liquid walled in by solids on every side (a body resting on the floor can close
+  // one) has no cell whose pressure is fixed by air or an open face: its block of the matrix is
+  // singular (pure Neumann) and its right-hand side, the solids' net inflow, need not sum to zero
+  // — PCG then divides by nothing and the pressure turns NaN. Incompressible liquid cannot change
+  // the pocket's volume: remove the mean of its right-hand side (the compatible part), and pin
+  // its first cell's pressure with one air-like term; the pinned equation then holds with p = 0
+  // there (the rows of a Neumann block sum to zero), so every other equation holds exactly.
+  const auto n = static_cast<std::int32_t>(fixedLevel.size());
+  std::vector<std::int32_t> pocket(static_cast<std::size_t>(n), -1), stack;
+  std::int64_t pockets = 0;
+  for (std::int32_t seed = 0; seed < n; ++seed) {
+    if (pocket[seed] >= 0) continue;
+    std::vector<std::int32_t> members;
+    bool fixed = false;
+    pocket[seed] = seed;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const std::int32_t row = stack.back();
+      stack.pop_back();
+      members.push_back(row);
+      fixed = fixed || fixedLevel[row] != 0;
+      for (int a = 0; a < 3; ++a)
+        for (const std::int32_t next : {matrix_.plusNeighbour[a][row], matrix_.minusNeighbour[a][row]})
+          if (next >= 0 && pocket[next] < 0) {
+            pocket[next] = seed;
+            stack.push_back(next);
+          }
+    }
+    if (fixed) continue;
+    ++pockets;
+    double mean = 0.0;
+    for (const std::int32_t row : members) mean += rhs_[row];
+    mean /= static_cast<double>(members.size());
+    for (const std::int32_t row : members) rhs_[row] -= mean;
+    matrix_.diagonal[seed] += scale;  // members are in ascending order's discovery: seed is the first
+  }
+  return pockets;
 }
 
 void PressureSolver::updateVelocity(MacVelocity& velocity, const PressureProblem& problem) {
@@ -222,6 +266,7 @@ PressureReport PressureSolver::project(MacVelocity& velocity, const PressureProb
   report.relativeResidual = solve.relativeResidual;
   report.converged = solve.converged;
   report.unknowns = static_cast<std::int64_t>(matrix_.size());
+  report.sealedPockets = sealedPockets_;
   report.matrixVectorProducts = solve.matrixVectorProducts;
   report.matvecEquivalents = solve.matvecEquivalents;
   return report;

@@ -53,6 +53,8 @@ struct PressureReport {
   std::int64_t unknowns = 0;     ///< liquid cells with at least one open face
   int matrixVectorProducts = 0;  ///< 7-point products evaluated
   double matvecEquivalents = 0;  ///< products plus preconditioner work (PcgResult)
+  /// pockets of liquid sealed by solids on every side, solved with their volume held (sealPockets)
+  std::int64_t sealedPockets = 0;
   bool operator==(const PressureReport&) const = default;
 };
 
@@ -118,12 +120,16 @@ class PressureSolver {
  private:
   /// Numbers the unknowns and fills matrix_ and rhs_.
   void assemble(const MacVelocity& velocity, const PressureProblem& problem);
+  /// Makes each sealed pocket of liquid (no cell next to air or an open face) solvable: its
+  /// right-hand side's mean removed, its first cell pinned. @return the pockets found
+  std::int64_t sealPockets(const std::vector<std::uint8_t>& fixedLevel, double scale);
   /// The pressure gradient on the open faces next to liquid; valid_.
   void updateVelocity(MacVelocity& velocity, const PressureProblem& problem);
 
   Array3<std::int32_t> unknownOfCell_;  ///< unknown number per cell, −1 if none
   SevenPointMatrix matrix_;
   std::vector<double> rhs_;
+  std::int64_t sealedPockets_ = 0;  ///< of the last assemble()
   std::vector<double> solution_;
   PcgSolver pcg_;
   Mic0Preconditioner mic0_;            ///< rebuilt by every solve that uses it

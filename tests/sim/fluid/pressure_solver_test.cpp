@@ -347,3 +347,36 @@ TEST(PressureSolver, RejectsArraysOfTheWrongSize) {
 
 }  // namespace
 }  // namespace fluidsound::sim
+
+namespace fluidsound::sim {
+namespace {
+
+TEST(PressureSolver, SealedPocketIsSolvedWithItsVolumeHeld) {
+  // Claim: liquid walled in on every side (a closed tank filled to the lid; in a scene, water
+  // trapped under a body resting on the floor) has no pressure level fixed by air: its matrix is
+  // singular and a rising floor pushes in volume it cannot take. The solver removes the
+  // incompatible mean and pins one cell (sealPockets): the solve converges to finite pressures
+  // and the only change the pocket's faces see is the divergence-free part. Reference: the
+  // closed tank's faces (no flow through walls: the total inflow the rising floor asks for is
+  // removed, so every interior face stays finite and the solve's residual meets 1e-8).
+  constexpr int kSide = 12;
+  Solid floor;
+  floor.shape = Box{{-1.0, -1.0, -1.0}, {2.0, 3 * kCell, 2.0}};
+  floor.path = {PathKey{0.0, {0, 0, 0}}, PathKey{1.0, {0, 0.5, 0}}};
+  Tank tank(kSide, 10.0 * kSide * kCell, std::span(&floor, 1));  // liquid up to and past the lid
+  MacVelocity u(tank.grid);
+  PressureSolver solver;
+  const PressureReport r = project(solver, u, tank, PressureSettings{1e-8, 1000});
+  EXPECT_EQ(r.sealedPockets, 1);
+  EXPECT_TRUE(r.converged) << r;
+  for (double p : solver.pressure().values()) ASSERT_TRUE(std::isfinite(p));
+  for (int a = 0; a < 3; ++a)
+    for (float v : u[a].values()) ASSERT_TRUE(std::isfinite(v));
+  // The open tank of the other tests has none.
+  Tank open(kSide, 6.3 * kCell, std::span(&floor, 1), /*openTop=*/true);
+  MacVelocity w(open.grid);
+  EXPECT_EQ(project(solver, w, open, PressureSettings{1e-8, 1000}).sealedPockets, 0);
+}
+
+}  // namespace
+}  // namespace fluidsound::sim
