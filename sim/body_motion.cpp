@@ -1,0 +1,278 @@
+// sim/body_motion.cpp — see body_motion.h.
+#include "sim/body_motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <variant>
+
+#include "sim/bodies/rigid_world.h"
+#include "sim/fluid/solid_rotation.h"
+
+namespace fluidsound::sim {
+
+namespace {
+
+Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 scaled(const Vec3& a, double s) { return {s * a[0], s * a[1], s * a[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+/// The placed shape's centre c₁ (scaled) and, for a mesh, its scaled vertices' bounds.
+Vec3 shapeCentre(const SceneBody& body) {
+  if (const auto* box = std::get_if<Box>(&body.shape))
+    return scaled(add(box->min, box->max), 0.5 * body.scale);
+  if (const auto* sphere = std::get_if<Sphere>(&body.shape)) return scaled(sphere->center, body.scale);
+  const TriangleMesh& mesh = *std::get<MeshFile>(body.shape).surface;  // scaled already (io)
+  Vec3 lo{}, hi{};
+  lo.fill(std::numeric_limits<double>::max());
+  hi.fill(-std::numeric_limits<double>::max());
+  for (const auto& v : mesh.vertices)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(v[a])), hi[a] = std::max(hi[a], double(v[a]));
+  return scaled(add(lo, hi), 0.5);
+}
+
+/// Whether a world point lies in one of the scene's initial liquid boxes or spheres.
+bool inStillLiquid(const Scene& scene, const Vec3& p) {
+  for (const LiquidRegion& region : scene.liquid) {
+    if (const auto* box = std::get_if<Box>(&region.shape)) {
+      if (p[0] >= box->min[0] && p[0] <= box->max[0] && p[1] >= box->min[1] && p[1] <= box->max[1] &&
+          p[2] >= box->min[2] && p[2] <= box->max[2])
+        return true;
+    } else if (const auto* sphere = std::get_if<Sphere>(&region.shape)) {
+      const Vec3 d = sub(p, sphere->center);
+      if (dot(d, d) <= sphere->radius * sphere->radius) return true;
+    }
+  }
+  return false;
+}
+
+/// Points filling a body's shape (its frame), each standing for the same volume.
+std::vector<Vec3> volumePoints(const RigidBodySpec& spec, int perAxis) {
+  Vec3 half{};
+  std::function<bool(const Vec3&)> inside;
+  if (const auto* sphere = std::get_if<SphereShape>(&spec.shape)) {
+    half = {sphere->radius, sphere->radius, sphere->radius};
+    const double r2 = sphere->radius * sphere->radius;
+    inside = [r2](const Vec3& p) { return dot(p, p) <= r2; };
+  } else if (const auto* box = std::get_if<BoxShape>(&spec.shape)) {
+    half = box->halfExtents;
+    inside = [](const Vec3&) { return true; };
+  } else {
+    const TriangleMesh& mesh = std::get<TriangleMesh>(spec.shape);
+    for (const auto& v : mesh.vertices)
+      for (int a = 0; a < 3; ++a) half[a] = std::max(half[a], std::abs(double(v[a])));
+    // Inside by the parity of crossings of a ray along +x (a closed mesh, checked when read).
+    inside = [&mesh](const Vec3& p) {
+      bool in = false;
+      for (const auto& t : mesh.triangles) {
+        const auto& a = mesh.vertices[t[0]];
+        const auto& b = mesh.vertices[t[1]];
+        const auto& c = mesh.vertices[t[2]];
+        // Barycentric test of (p.y, p.z) in the triangle's projection on the y–z plane.
+        const double d = (b[1] - a[1]) * (c[2] - a[2]) - (c[1] - a[1]) * (b[2] - a[2]);
+        if (d == 0.0) continue;
+        const double u = ((p[1] - a[1]) * (c[2] - a[2]) - (c[1] - a[1]) * (p[2] - a[2])) / d;
+        const double w = ((b[1] - a[1]) * (p[2] - a[2]) - (p[1] - a[1]) * (b[2] - a[2])) / d;
+        if (u < 0.0 || w < 0.0 || u + w > 1.0) continue;
+        const double x = a[0] + u * (b[0] - a[0]) + w * (c[0] - a[0]);
+        if (x > p[0]) in = !in;
+      }
+      return in;
+    };
+  }
+  std::vector<Vec3> points;
+  for (int i = 0; i < perAxis; ++i)
+    for (int j = 0; j < perAxis; ++j)
+      for (int k = 0; k < perAxis; ++k) {
+        // Cell centres of an n³ lattice over the box, nudged off symmetry planes for the ray test.
+        const Vec3 p{half[0] * ((2.0 * i + 1.0) / perAxis - 1.0) + 1e-9 * half[0],
+                     half[1] * ((2.0 * j + 1.0) / perAxis - 1.0) + 1.3e-9 * half[1],
+                     half[2] * ((2.0 * k + 1.0) / perAxis - 1.0) + 0.7e-9 * half[2]};
+        if (inside(p)) points.push_back(p);
+      }
+  return points;
+}
+
+/// The still liquid's force and torque (about the centre of mass) on one dynamic body.
+struct LiquidPush {
+  Vec3 force{}, torque{};
+  double submergedShare = 0.0;
+};
+
+LiquidPush liquidPush(const Scene& scene, const RigidWorld& world, int body, const std::vector<Vec3>& points,
+                      double volume, const LiquidForces& liquid) {
+  const BodyPose pose = world.pose(body);
+  Vec3 centroid{};
+  std::size_t wet = 0;
+  for (const Vec3& p : points) {
+    const Vec3 x = add(pose.position, rotate(pose.orientation, p));
+    if (inStillLiquid(scene, x)) {
+      centroid = add(centroid, x);
+      ++wet;
+    }
+  }
+  LiquidPush push;
+  if (wet == 0 || points.empty()) return push;
+  push.submergedShare = double(wet) / double(points.size());
+  centroid = scaled(centroid, 1.0 / double(wet));
+  const double submerged = volume * push.submergedShare;
+  // Archimedes: the displaced liquid's weight, up against gravity, at the submerged centroid.
+  const Vec3 buoyancy = scaled(scene.gravity, -liquid.density * submerged);
+  // Quadratic drag on the sphere of the body's volume, by the submerged share.
+  const Vec3 v = world.velocity(body).linear;
+  const double radius = std::cbrt(3.0 * volume / (4.0 * std::numbers::pi));
+  const double area = std::numbers::pi * radius * radius;
+  const Vec3 drag = scaled(v, -0.5 * liquid.density * liquid.dragCoefficient * area * push.submergedShare *
+                                  std::sqrt(dot(v, v)));
+  push.force = add(buoyancy, drag);
+  push.torque = cross(sub(centroid, world.centreOfMass(body)), buoyancy);
+  return push;
+}
+
+double shapeVolume(const RigidBodySpec& spec, const std::vector<Vec3>& points, int perAxis) {
+  if (const auto* sphere = std::get_if<SphereShape>(&spec.shape))
+    return 4.0 / 3.0 * std::numbers::pi * std::pow(sphere->radius, 3);
+  if (const auto* box = std::get_if<BoxShape>(&spec.shape))
+    return 8.0 * box->halfExtents[0] * box->halfExtents[1] * box->halfExtents[2];
+  Vec3 half{};
+  for (const auto& v : std::get<TriangleMesh>(spec.shape).vertices)
+    for (int a = 0; a < 3; ++a) half[a] = std::max(half[a], std::abs(double(v[a])));
+  return 8.0 * half[0] * half[1] * half[2] * double(points.size()) / std::pow(double(perAxis), 3);
+}
+
+DomainBox domainBox(const Domain& domain) {
+  DomainBox box{domain.min, domain.max, {}};
+  for (int f = 0; f < 6; ++f)
+    if (domain.open[f]) box.openFaces.push_back(static_cast<DomainFace>(f));
+  return box;
+}
+
+}  // namespace
+
+Quaternion quaternionFromEulerDegrees(const Vec3& degrees) {
+  const double toRadians = std::numbers::pi / 180.0;
+  const Quaternion qx = quaternionFromAxisAngle({1, 0, 0}, degrees[0] * toRadians);
+  const Quaternion qy = quaternionFromAxisAngle({0, 1, 0}, degrees[1] * toRadians);
+  const Quaternion qz = quaternionFromAxisAngle({0, 0, 1}, degrees[2] * toRadians);
+  return qz * qy * qx;
+}
+
+RigidBodySpec rigidBodySpec(const SceneBody& body) {
+  RigidBodySpec spec;
+  spec.name = body.name;
+  const Vec3 centre = shapeCentre(body);
+  if (const auto* box = std::get_if<Box>(&body.shape)) {
+    spec.shape = BoxShape{scaled(sub(box->max, box->min), 0.5 * body.scale)};
+  } else if (const auto* sphere = std::get_if<Sphere>(&body.shape)) {
+    spec.shape = SphereShape{sphere->radius * body.scale};
+  } else {
+    TriangleMesh mesh = *std::get<MeshFile>(body.shape).surface;
+    for (auto& v : mesh.vertices)
+      for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(double(v[a]) - centre[a]);
+    spec.shape = std::move(mesh);
+  }
+  spec.density = body.material.density;
+  spec.isStatic = body.isStatic;
+  spec.position = add(centre, body.translate);
+  spec.rotation = quaternionFromEulerDegrees(body.rotateDegrees);
+  spec.velocity = body.velocity;
+  spec.angularVelocity = body.angularVelocity;
+  spec.friction = body.friction;
+  spec.restitution = body.restitution;
+  return spec;
+}
+
+double contactRadius(const RigidBodySpec& spec) {
+  if (const auto* sphere = std::get_if<SphereShape>(&spec.shape)) return sphere->radius;
+  if (const auto* box = std::get_if<BoxShape>(&spec.shape))
+    return std::min({box->halfExtents[0], box->halfExtents[1], box->halfExtents[2]});
+  Vec3 lo{}, hi{};
+  lo.fill(std::numeric_limits<double>::max());
+  hi.fill(-std::numeric_limits<double>::max());
+  for (const auto& v : std::get<TriangleMesh>(spec.shape).vertices)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(v[a])), hi[a] = std::max(hi[a], double(v[a]));
+  return 0.5 * std::min({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+}
+
+BodyMotion simulateBodies(const Scene& scene, StageObserver& observer, const LiquidForces& liquid) {
+  std::vector<RigidBodySpec> specs;
+  for (const SceneBody& body : scene.bodies) specs.push_back(rigidBodySpec(body));
+  RigidWorldSettings settings;
+  settings.gravity = scene.gravity;
+  settings.domain = domainBox(scene.domain);
+  RigidWorld world(specs, settings);
+
+  BodyMotion motion;
+  motion.contacts.substep = world.substep();
+  motion.contacts.duration = scene.time.duration;
+  const int n = world.bodyCount();
+  std::vector<std::vector<Vec3>> points(n);
+  std::vector<double> volumes(n, 0.0);
+  std::vector<Vec3> start(n);
+  for (int b = 0; b < n; ++b) {
+    motion.contacts.bodies.push_back({specs[b].name, world.mass(b), specs[b].isStatic, contactRadius(specs[b])});
+    start[b] = world.pose(b).position;
+    if (!specs[b].isStatic) {
+      points[b] = volumePoints(specs[b], liquid.samplesPerAxis);
+      volumes[b] = shapeVolume(specs[b], points[b], liquid.samplesPerAxis);
+    }
+  }
+  motion.paths.assign(n, {});
+  motion.largestSubmergedShare.assign(n, 0.0);
+  const auto keyPaths = [&] {
+    for (int b = 0; b < n; ++b) motion.paths[b].push_back({world.time(), sub(world.pose(b).position, start[b])});
+  };
+  const auto substeps = static_cast<std::int64_t>(std::llround(scene.time.duration / world.substep()));
+  const auto keyEvery = static_cast<std::int64_t>(std::llround(motion.pathInterval / world.substep()));
+  observer.started(scene.time.duration);
+  keyPaths();
+  for (std::int64_t s = 0; s < substeps; ++s) {
+    if (s % 10 == 0) {
+      if (observer.wasInterrupted()) throw StageInterrupted("bodies at t = " + std::to_string(world.time()) + " s");
+      observer.progress(double(s) / double(substeps));
+    }
+    for (int b = 0; b < n; ++b) {
+      if (specs[b].isStatic || scene.liquid.empty()) continue;
+      const LiquidPush push = liquidPush(scene, world, b, points[b], volumes[b], liquid);
+      world.setExternalForce(b, push.force, push.torque);
+      motion.largestSubmergedShare[b] = std::max(motion.largestSubmergedShare[b], push.submergedShare);
+    }
+    world.advance(world.substep());
+    if ((s + 1) % keyEvery == 0 || s + 1 == substeps) keyPaths();
+  }
+  observer.progress(1.0);
+  motion.contacts.records = world.takeContacts();
+  return motion;
+}
+
+Scene sceneWithBodiesAsSolids(const Scene& scene, const BodyMotion& motion) {
+  Scene out = scene;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const SceneBody& body = scene.bodies[b];
+    Solid solid{body.shape, body.scale, body.rotateDegrees, body.translate, {}};
+    if (const auto* mesh = std::get_if<MeshFile>(&body.shape)) {
+      // A solid mesh's triangles are placed (io places the scene's own when it reads them).
+      const Vec3 centre = shapeCentre(body);
+      auto placed = std::make_shared<TriangleMesh>(*mesh->surface);
+      for (auto& v : placed->vertices) {
+        const Vec3 p = add(add(centre, rotateByEulerDegrees(sub({v[0], v[1], v[2]}, centre), body.rotateDegrees)),
+                           body.translate);
+        v = {float(p[0]), float(p[1]), float(p[2])};
+      }
+      solid.shape = MeshFile{mesh->file, placed};
+    }
+    if (!body.isStatic && b < motion.paths.size()) solid.path = motion.paths[b];
+    out.solids.push_back(std::move(solid));
+  }
+  return out;
+}
+
+}  // namespace fluidsound::sim
