@@ -1,5 +1,5 @@
 // acoustics/modal/contact_impacts.h — the impacts a body's modes hear in the rigid-body stage's
-// contact log (sim/bodies/contact_record.h, re-expressed on the sounding body): a touch that
+// contact log (sim/core/contact_record.h, re-expressed on the sounding body): a touch that
 // closes faster than a threshold after not doing so in the substep before is one impact, its
 // points' impulses summed (docs/solids.md, Impacts). Resting, sliding and rolling contacts are
 // not impacts: a steady load makes no sound, and their continuous excitation is another model.
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "acoustics/modal/modal_analysis.h"
 #include "acoustics/modal/modal_synthesis.h"
@@ -30,6 +31,10 @@ struct BodyContactPoint {
   /// the rolling rate times the other body's radius at the point: how fast a rolling contact
   /// moves over this body's surface [m/s]
   double rollingSpeed = 0.0;
+  /// Where the body was in the substep (for its radiation): its world-from-body rotation and
+  /// its reference point's world position [m].
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 
 /// The points one substep of the log holds with one other body.

@@ -165,6 +165,7 @@ std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<cons
     if (!(omegaD > 0.0)) continue;
     std::fill(drive.begin(), drive.end(), 0.0);
     long long first = static_cast<long long>(samples);  // the earliest driven sample
+    long long last = -1;                                // the latest
     for (const ModalForce& force : forces) {
       const auto start = static_cast<long long>(std::llround((force.startTime + delay) * settings.sampleRate));
       for (std::size_t i = 0; i < force.force.size(); ++i) {
@@ -176,15 +177,25 @@ std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<cons
             model.surfaceShapes.block<3, 1>(static_cast<Eigen::Index>(3 * node), static_cast<Eigen::Index>(j));
         drive[static_cast<std::size_t>(n)] += static_cast<double>(shape.dot(force.force[i]));
         first = std::min(first, n);
+        last = std::max(last, n);
       }
     }
     const std::complex<double> s(-model.decayRate[j], omegaD), r = std::exp(s * dt);
     const std::complex<double> step = gains[j] * (r - 1.0) / (s * omegaD);  // the gain folded in
     std::complex<double> z = 0.0;
-    // One pass per mode, driven by every force and ringing out to the end of the output.
+    // One pass per mode, driven by every force, ringing out after the last until its output
+    // falls below `truncation` of its largest while driven (checked every 64 samples).
+    double peak = 0.0;
     for (std::size_t n = static_cast<std::size_t>(first); n < samples; ++n) {
       out[n] += static_cast<float>(z.imag());
       z = z * r + step * drive[n];
+      const double size = std::norm(z);
+      if (static_cast<long long>(n) <= last) {
+        peak = std::max(peak, size);
+      } else if (settings.truncation > 0.0 && n % 64 == 0 &&
+                 size < settings.truncation * settings.truncation * peak) {
+        break;
+      }
     }
   }
   return out;

@@ -87,7 +87,9 @@ struct ModalForce {
 ///        z ← r·z + g·(r − 1)/(s·ω_d), g = φ_j(x)·F, the exact response of the damped mode to a
 ///        piecewise-constant force (q = Im z; a constant g settles at g/ω², the static
 ///        deflection). The same modes, gains and delay as synthesizeModalImpacts; a force's
-///        samples start at the output sample nearest its startTime + delay.
+///        samples start at the output sample nearest its startTime + delay. After its last driven
+///        sample a mode rings until |z| falls below settings.truncation of its largest |z| while
+///        driven (0: to the end); compression is not applied to forces.
 std::vector<float> synthesizeModalForces(const ModalModel& model, std::span<const ModalForce> forces,
                                          std::span<const std::complex<double>> gains, std::size_t samples,
                                          double delay, const ModalSynthesisSettings& settings);

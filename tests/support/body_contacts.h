@@ -1,41 +1,29 @@
-// tests/support/body_contacts.h — the rigid-body stage's contact log (sim::ContactRecord) as one
-// body's contact points (acoustics::BodyContactPoint): that body's side of each record, in its
-// own frame. (The contact log's file reader will do the same for `run`.)
+// tests/support/body_contacts.h — a RigidWorld's contact log as one body's contact points
+// (acoustics::bodyContactPoints, as `run` reads them from contacts.bin), for tests that step a
+// world in memory.
 #pragma once
 
 #include <vector>
 
-#include "acoustics/modal/contact_impacts.h"
-#include "sim/bodies/contact_record.h"
+#include "acoustics/modal/body_contact_points.h"
 #include "sim/bodies/rigid_world.h"
 
 namespace fluidsound::test {
 
-inline Eigen::Vector3d eigen(const Vec3& v) { return {v[0], v[1], v[2]}; }
+/// The world's contact log so far with its bodies, as simulate writes it.
+inline sim::ContactLog contactLogOf(const sim::RigidWorld& world) {
+  sim::ContactLog log;
+  log.substep = world.substep();
+  log.duration = world.time();
+  for (int b = 0; b < world.bodyCount(); ++b)
+    log.bodies.push_back({world.spec(b).name, world.mass(b), world.spec(b).isStatic, 1.0});
+  log.records = world.contacts();
+  return log;
+}
 
-/// The records touching `body` (which must not move: its frame's axes are the world's), from its
-/// side: the impulse on it, the normal into it, the other body's radius at the point (its local
-/// point's distance from its reference) times the rolling rate as the rolling speed.
-inline std::vector<acoustics::BodyContactPoint> contactsOn(const std::vector<sim::ContactRecord>& log, int body) {
-  std::vector<acoustics::BodyContactPoint> points;
-  for (const sim::ContactRecord& c : log) {
-    if (c.bodyA != body && c.bodyB != body) continue;
-    const bool isA = c.bodyA == body;
-    const double sign = isA ? 1.0 : -1.0;  // the record's impulse and normal are A's
-    const Eigen::Vector3d normal = sign * eigen(c.normal);
-    acoustics::BodyContactPoint p;
-    p.time = c.time;
-    p.other = isA ? c.bodyB : c.bodyA;
-    p.localPoint = eigen(isA ? c.localPointA : c.localPointB);
-    p.impulse = c.normalImpulse * normal + sign * eigen(c.frictionImpulse);
-    p.normalSpeed = c.normalSpeed;
-    p.normalImpulse = c.normalImpulse;
-    p.normal = normal;
-    p.tangentialSpeed = c.tangentialSpeed;
-    p.rollingSpeed = c.rollingRate * eigen(isA ? c.localPointB : c.localPointA).norm();
-    points.push_back(p);
-  }
-  return points;
+/// The points of the world's log that touch `body`, from its side, in its frame.
+inline std::vector<acoustics::BodyContactPoint> contactsOn(const sim::RigidWorld& world, int body) {
+  return acoustics::bodyContactPoints(contactLogOf(world), body);
 }
 
 }  // namespace fluidsound::test

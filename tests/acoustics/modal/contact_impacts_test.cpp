@@ -68,7 +68,7 @@ TEST(ContactImpacts, BouncingBallGivesOneImpactPerBounceAndNoneAtRest) {
   sim::RigidWorld world({plate, ball});
   world.advance(1.0);
 
-  const std::vector<BodyContactPoint> onPlate = test::contactsOn(world.contacts(), 0);
+  const std::vector<BodyContactPoint> onPlate = test::contactsOn(world, 0);
   std::size_t restingPoints = 0;
   for (const sim::ContactRecord& c : world.contacts()) {
     ASSERT_EQ(c.bodyA, 0);  // the plate: the lower index

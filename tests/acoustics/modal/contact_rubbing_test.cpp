@@ -53,7 +53,7 @@ TEST(ContactRubbing, PushedBoxRubsOnlyWhileItSlides) {
   box.friction = 0.3;
   sim::RigidWorld world({plate(), box});
   world.advance(0.6);
-  const std::vector<RubbingContact> touches = rubbingFromContacts(test::contactsOn(world.contacts(), 0), plateModel(), 1e-3);
+  const std::vector<RubbingContact> touches = rubbingFromContacts(test::contactsOn(world, 0), plateModel(), 1e-3);
   ASSERT_EQ(touches.size(), 1u);
   const RubbingContact& touch = touches.front();
   EXPECT_EQ(touch.other, 1);
@@ -100,7 +100,7 @@ TEST(ContactRubbing, RollingBallsForceSpectrumFollowsItsSpeed) {
     ball.angularVelocity = {0.0, 0.0, -speed / 0.01};
     sim::RigidWorld world({plate(), ball});
     world.advance(seconds);
-    const auto touches = rubbingFromContacts(test::contactsOn(world.contacts(), 0), plateModel(), 1e-3);
+    const auto touches = rubbingFromContacts(test::contactsOn(world, 0), plateModel(), 1e-3);
     EXPECT_EQ(touches.size(), 1u);
     for (const RubbingSample& s : touches.front().substeps) {
       EXPECT_TRUE(s.rolling);

@@ -12,13 +12,12 @@
 #include <numbers>
 #include <vector>
 
-#include <unsupported/Eigen/FFT>
-
 #include "acoustics/modal/hertz_contact.h"
 #include "acoustics/modal/modal_analysis.h"
 #include "acoustics/modal/mode_compression.h"
 #include "io/audio_file.h"
 #include "support/temp_folder.h"
+#include "support/third_octave.h"
 
 namespace fluidsound::acoustics {
 namespace {
@@ -206,25 +205,7 @@ TEST(ModalSynthesis, TruncationStopsQuietModesAndCostsLess) {
   EXPECT_LT(truncated.oscillatorSamples, full.oscillatorSamples / 2);
 }
 
-/// Energy per third-octave band (centres 100 Hz · 2^{k/3}, k = 0 … 21) of a signal [dB, relative].
-std::vector<double> thirdOctaveLevels(const std::vector<float>& x, double rate) {
-  Eigen::FFT<double> fft;
-  std::vector<double> input(x.begin(), x.end());
-  std::vector<std::complex<double>> spectrum;
-  fft.fwd(spectrum, input);
-  std::vector<double> levels;
-  for (int k = 0; k <= 21; ++k) {
-    const double centre = 100.0 * std::pow(2.0, k / 3.0), lo = centre * std::pow(2.0, -1.0 / 6.0),
-                 hi = centre * std::pow(2.0, 1.0 / 6.0);
-    double energy = 1e-30;
-    for (std::size_t b = 0; b < spectrum.size() / 2; ++b) {
-      const double f = b * rate / spectrum.size();
-      if (f >= lo && f < hi) energy += std::norm(spectrum[b]);
-    }
-    levels.push_back(10.0 * std::log10(energy));
-  }
-  return levels;
-}
+using test::thirdOctaveLevels;
 
 // T8 on the free steel bar at 5 mm voxels (every mode up to 20 kHz): compression merges the modes
 // closer than the discrimination limit (36 → 33 oscillators), every kept oscillator lies within

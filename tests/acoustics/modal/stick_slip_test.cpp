@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace fluidsound::acoustics {
@@ -46,6 +47,31 @@ TEST(StickSlip, RoughPatchesKeepTheFrictionsImpulse) {
   for (const ModalImpact& slip : slips) sum += slip.impulse.x();
   EXPECT_NEAR(sum, -3.0 * slips.back().time, 1e-9);
   EXPECT_EQ(stickSlipImpacts(sliding(0.7, 0.5), rough).size(), slips.size());  // deterministic
+}
+
+// A contact speeding up from a crawl (a box that starts to slide: 2 m/s², from 1 mm/s to 1 m/s in
+// 0.5 s) breaks at the patch of its speed now, a₁/v, and releases at most the friction over one
+// such patch, F·a₁/v², not the friction of its whole slow start; each slip lasts slipShare of
+// its patch's time (a half-sine pulse, StickSlipSettings::slipShare). Reference: the bound
+// itself, per slip, to rounding.
+TEST(StickSlip, AcceleratingContactReleasesAtMostOnePatchOfFriction) {
+  std::vector<RubbingSample> ramp;
+  for (int i = 1; i <= 500; ++i) {
+    RubbingSample sample{i * 1e-3, 10.0, 1e-3 + 2.0 * i * 1e-3};
+    sample.friction = {-3.0, 0.0, 0.0};
+    ramp.push_back(sample);
+  }
+  const std::vector<ModalImpact> slips = stickSlipImpacts(ramp, {});
+  ASSERT_GT(slips.size(), 20u);
+  for (const ModalImpact& slip : slips) {
+    const double v = 1e-3 + 2.0 * std::ceil(slip.time * 1e3 - 1e-9) * 1e-3;  // its substep's speed
+    const double patchTime = 3e-3 / (v * v);
+    EXPECT_LE(std::abs(slip.impulse.x()), 3.0 * patchTime * (1.0 + 1e-9)) << slip.time;
+    EXPECT_NEAR(slip.contactDuration, 0.1 * patchTime, 1e-12) << slip.time;
+  }
+  // Unbounded, the first slip (at ~0.11 s, where the slid t² reaches a₁/v) would carry the 3 N
+  // of the whole time before it; the bound at its speed (0.23 m/s) leaves about half of that.
+  EXPECT_LT(std::abs(slips.front().impulse.x()), 0.6 * 3.0 * slips.front().time);
 }
 
 TEST(StickSlip, StickingOrRollingMakesNoBreaks) {
