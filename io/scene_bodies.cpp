@@ -87,4 +87,35 @@ sim::SceneBody readSceneBody(const JsonValidator& check, const json& item, const
   return body;
 }
 
+sim::CollisionSamples readCollisionSamples(const JsonValidator& check, const json& item, const std::string& path,
+                                           const std::filesystem::path& folder) {
+  check.requireObject(item, path, "an object with materials and at least one of impact, slide, roll");
+  check.rejectUnknownKeys(item, path, {"materials", "impact", "slide", "roll", "peak_pa"});
+  sim::CollisionSamples samples;
+  const std::string materialsPath = memberPath(path, "materials");
+  const json* materials = findMember(item, "materials");
+  const std::string expected = "two material names (" + materialNames() + ", or \"domain\" for the walls)";
+  if (!materials || !materials->is_array() || materials->size() != 2)
+    check.fail(materialsPath, expected, materials ? describe(*materials) : "nothing");
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::string name = check.nonEmptyText((*materials)[k], elementPath(materialsPath, k), expected);
+    if (name != "domain" && !acoustics::findSolidMaterial(name))
+      check.fail(elementPath(materialsPath, k), expected, quotedText(name));
+    samples.materials[k] = name;
+  }
+  bool any = false;
+  for (const auto& [key, file] : {std::pair{"impact", &samples.impact}, std::pair{"slide", &samples.slide},
+                                  std::pair{"roll", &samples.roll}}) {
+    if (const json* value = findMember(item, key)) {
+      *file = (folder / check.nonEmptyText(*value, memberPath(path, key), "the path of a recording (WAV or FLAC)"))
+                  .lexically_normal();
+      any = true;
+    }
+  }
+  if (!any) check.fail(path, "at least one of impact, slide, roll", "none of them");
+  samples.peakPascals = check.optionalNumber(item, path, "peak_pa", 1.0, "a pressure > 0 (Pa)",
+                                             [](double v) { return v > 0.0 && v < 1e6; });
+  return samples;
+}
+
 }  // namespace fluidsound::io

@@ -21,4 +21,11 @@ namespace fluidsound::io {
 sim::SceneBody readSceneBody(const JsonValidator& check, const nlohmann::json& item, const std::string& path,
                              const std::filesystem::path& folder, std::size_t index);
 
+/// @brief One item of `collision_samples` at `path`: `materials` (two of the table's names or
+///        "domain"), at least one of `impact`, `slide`, `roll` (file paths relative to `folder`),
+///        `peak_pa` (> 0, default 1). The files are read and checked by io::loadCollisionSamples.
+/// @throws InputError naming the file, the JSON path and what was expected
+sim::CollisionSamples readCollisionSamples(const JsonValidator& check, const nlohmann::json& item,
+                                           const std::string& path, const std::filesystem::path& folder);
+
 }  // namespace fluidsound::io

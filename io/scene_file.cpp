@@ -118,7 +118,8 @@ class SceneReader {
     check_.requireFormat(root, kFormatTag);
     check_.rejectUnknownKeys(root, "",
                              {"format", "domain", "gravity", "time", "seed", "liquid", "emitters",
-                              "solids", "bodies", "listeners", "audio", "solver", "bubbles", "transfer"});
+                              "solids", "bodies", "collision_samples", "listeners", "audio", "solver", "bubbles",
+                              "transfer"});
 
     sim::Scene scene;
     scene.domain =
@@ -155,6 +156,12 @@ class SceneReader {
     if (const json* items = check_.optionalArray(root, "", "bodies", "an array of bodies")) {
       for (std::size_t i = 0; i < items->size(); ++i)
         scene.bodies.push_back(readSceneBody(check_, (*items)[i], elementPath("bodies", i), folder_, i));
+    }
+    if (const json* items = check_.optionalArray(root, "", "collision_samples",
+                                                 "an array of recorded collision sounds per pair of materials")) {
+      for (std::size_t i = 0; i < items->size(); ++i)
+        scene.collisionSamples.push_back(
+            readCollisionSamples(check_, (*items)[i], elementPath("collision_samples", i), folder_));
     }
     scene.listeners = listeners(root, scene.domain, scene.gravity);
     if (const json* audio =

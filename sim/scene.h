@@ -4,6 +4,7 @@
 // JSON into these records.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -76,6 +77,17 @@ struct SceneBody {
   bool operator==(const SceneBody&) const = default;
 };
 
+/// Recorded collision sounds of one pair of materials, for the sample-playback baseline
+/// (`run --solids samples`; docs/solids.md, "Sample playback in run").
+struct CollisionSamples {
+  /// the two materials' table names (in either order), or "domain" for the domain's walls
+  std::array<std::string, 2> materials;
+  /// the recordings (WAV or FLAC), resolved against the scene file's folder; empty: none
+  std::filesystem::path impact, slide, roll;
+  double peakPascals = 1.0;  ///< [Pa] of a full-scale sample 1 m from the pair's loudest event
+  bool operator==(const CollisionSamples&) const = default;
+};
+
 /// A whole scene: the fluid's part and the rest.
 struct Scene : FluidScene {
   std::filesystem::path file;       ///< the scene file (for messages); paths inside are resolved
@@ -85,6 +97,7 @@ struct Scene : FluidScene {
   BubbleSettings bubbles;           ///< the "bubbles" block (docs/bubbles.md); defaults if absent
   TransferSettings transfer;        ///< the "transfer" block; defaults if absent
   std::vector<SceneBody> bodies;    ///< the "bodies" array (docs/solids.md); none if absent
+  std::vector<CollisionSamples> collisionSamples;  ///< the "collision_samples" array; none if absent
   bool operator==(const Scene&) const = default;
 };
 

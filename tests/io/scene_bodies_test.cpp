@@ -113,3 +113,36 @@ TEST(SceneBodies, OpenBodyMeshIsRefusedNamingItsJsonPath) {
 
 }  // namespace
 }  // namespace fluidsound::io
+
+namespace fluidsound::io {
+namespace {
+
+using namespace scene_test;
+
+json withSamples(const char* samples) { return withChange(minimalScene(), "/collision_samples", samples); }
+
+// `collision_samples` (docs/scene.md): a pair of the table's material names (or "domain"), files
+// resolved against the scene's folder, peak_pa; each mistake names its JSON path.
+TEST(SceneCollisionSamples, ReadsAPairAndNamesEachMistake) {
+  const sim::Scene scene = parseScene(
+      withSamples(R"([ { "materials": ["stone", "domain"], "impact": "hits/stone.wav", "peak_pa": 3 } ])").dump(),
+      "scenes/tank.json");
+  ASSERT_EQ(scene.collisionSamples.size(), 1u);
+  EXPECT_EQ(scene.collisionSamples[0].materials[1], "domain");
+  EXPECT_EQ(scene.collisionSamples[0].impact, std::filesystem::path("scenes/hits/stone.wav"));
+  EXPECT_TRUE(scene.collisionSamples[0].slide.empty());
+  EXPECT_EQ(scene.collisionSamples[0].peakPascals, 3.0);
+  expectError(parseError(withSamples(R"([ { "materials": ["stone", "granite"], "impact": "a.wav" } ])").dump()),
+              "collision_samples[0].materials[1]", "two material names");
+  expectError(parseError(withSamples(R"([ { "materials": ["stone"], "impact": "a.wav" } ])").dump()),
+              "collision_samples[0].materials", "two material names");
+  expectError(parseError(withSamples(R"([ { "materials": ["stone", "wood"] } ])").dump()), "collision_samples[0]",
+              "at least one of impact, slide, roll");
+  expectError(parseError(withSamples(R"([ { "materials": ["stone", "wood"], "roll": "r.wav", "peak_pa": 0 } ])").dump()),
+              "collision_samples[0].peak_pa", "a pressure > 0");
+  expectError(parseError(withSamples(R"([ { "materials": ["stone", "wood"], "hit": "r.wav" } ])").dump()),
+              "collision_samples[0].hit", "one of");
+}
+
+}  // namespace
+}  // namespace fluidsound::io
