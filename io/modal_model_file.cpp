@@ -75,6 +75,8 @@ std::uint64_t modalCacheKey(const std::filesystem::path& mesh, std::string_view 
   return fnv1a64(kMagic, fnv1a64(settings, digest->fnv1a));
 }
 
+std::uint64_t modalCacheKey(std::string_view settings) { return fnv1a64(kMagic, fnv1a64(settings)); }
+
 std::filesystem::path modalCacheFile(const std::filesystem::path& folder, std::uint64_t key) {
   return folder / (hexDigits(key) + ".modes");
 }

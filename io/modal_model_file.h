@@ -20,6 +20,10 @@ namespace fluidsound::io {
 /// @throws InputError if the mesh cannot be read
 std::uint64_t modalCacheKey(const std::filesystem::path& mesh, std::string_view settings);
 
+/// @brief The cache key of a body given by numbers alone (a box or a sphere): FNV-1a 64 of
+///        `settings` (its shape's sizes and every setting that shapes the modes) and the format's name.
+std::uint64_t modalCacheKey(std::string_view settings);
+
 /// The cache file of `key` in `folder`: FOLDER/KEY.modes (16 hex digits).
 std::filesystem::path modalCacheFile(const std::filesystem::path& folder, std::uint64_t key);
 

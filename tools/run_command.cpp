@@ -18,6 +18,9 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& o) {
   addCellOption(*c, o.cell);
   addAudioOutputOptions(*c, o.audio);
   addTransferModelOption(*c, o.transfer);
+  c->add_option("--solids", o.solids,
+                "how the scene's bodies sound: modal (their modes) or samples (its collision_samples played back)")
+      ->check(CLI::IsMember({"modal", "samples"}));
   addOscillatorModelOptions(*c, o.model);
   addCommonOptions(*c, o.common);
   return c;

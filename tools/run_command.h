@@ -22,6 +22,9 @@ struct RunOptions {
   AudioOutputOptions audio;    ///< synth's audio options, passed on to the synth stage
   acoustics::OscillatorModel model;  ///< the run's one model: transfer's ω, synth's oscillators
   std::optional<sim::TransferModel> transfer;  ///< --transfer; empty: the scene's transfer.model
+  /// --solids: how the bodies sound: "modal" (their modes) or "samples" (the scene's
+  /// collision_samples played back, the baseline: docs/solids.md)
+  std::string solids = "modal";
 };
 
 CLI::App* addRunCommand(CLI::App& app, RunOptions& options);

@@ -2,15 +2,20 @@
 #include "tools/run_pipeline.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <utility>
 
 #include "io/bubble_track_file.h"
+#include "io/input_error.h"
 #include "io/scene_file.h"
 #include "io/text_file.h"
 #include "tools/cell_option.h"
 #include "tools/render_memory.h"
 #include "tools/run_inputs.h"
+#include "tools/run_playback.h"
 #include "tools/run_report.h"
+#include "tools/run_solids.h"
 #include "tools/run_summary.h"
 #include "tools/simulate_command.h"
 #include "tools/solver_memory.h"
@@ -29,10 +34,20 @@ namespace {
 /// a file the run writes could not be written: bad input stops here, before any output.
 sim::Scene checkedScene(const RunOptions& o) {
   sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
+  readCollisionRecordings(scene);  // a missing or unreadable recording is bad input: refused now
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   requireMemoryForRender(scene, o.scene, physicalMemoryBytes());
   requireRunOutputs(o.output, audioName(scene.file, o.audio));
   return scene;
+}
+
+/// OUTDIR/stems, made if missing; anything else of that name is refused, not replaced.
+void createStemFolder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec || !std::filesystem::is_directory(folder))
+    throw io::OutputError(folder.string() + ": cannot make the stems' folder: " +
+                          (ec ? ec.message() : std::string("not a folder")));
 }
 
 }  // namespace
@@ -80,6 +95,7 @@ void RunPipeline::simulate() {
                                  .cell = o_.cell};
   std::vector<std::string> artefacts = frames_;
   artefacts.insert(artefacts.end(), {"bubbles.json", "report.json"});
+  if (!scene_.bodies.empty()) artefacts.push_back("contacts.bin");
   const bool ran = runStage({"simulate", {}, artefacts, hash_}, [&] {
     SimulateOutcome outcome = simulateIntoFolder(simulate);
     tracks_ = std::move(outcome.tracks);
@@ -114,10 +130,26 @@ void RunPipeline::synth() {
                            .spectrogram = (out_ / "spectrogram.png").string(),
                            .model = o_.model};
   // The synth stage also depends on the audio options: a new --loudness renders again.
-  const std::vector<std::string> artefacts = {audioFile_, "spectrogram.png", "synth.report.json"};
+  std::vector<std::string> artefacts = {audioFile_, "spectrogram.png", "synth.report.json"};
+  std::vector<std::string> reads = {"bubbles.json"};
+  // With bodies, the solids' stems are mixed in and every stem is written (tools/run_solids.h).
+  std::optional<MixedSources> mixed;
+  if (!scene_.bodies.empty()) {
+    reads.push_back("contacts.bin");
+    for (const char* stem : {"bubbles", "impacts", "rolling", "friction"})
+      artefacts.push_back(std::string("stems/") + stem + ".wav");
+    mixed = MixedSources{[this](std::size_t frames, double rate) {
+                           return o_.solids == "samples"
+                                      ? renderRunPlayback(scene_, out_, frames, rate, o_.common.quiet)
+                                      : renderRunSolids(scene_, out_, frames, rate, o_.common.quiet);
+                         },
+                         out_ / "stems"};
+  }
   const bool ran = runStage(
-      {"synth", {"bubbles.json"}, artefacts, modelHash_ + " " + audioOptionsFingerprint(o_.audio)},
-      [&] { synthReport_ = renderSynth(synth, tracks_ ? &*tracks_ : nullptr); });
+      {"synth", reads, artefacts, modelHash_ + " " + audioOptionsFingerprint(o_.audio) + " solids " + o_.solids}, [&] {
+        if (mixed) createStemFolder(mixed->stemFolder);
+        synthReport_ = renderSynth(synth, tracks_ ? &*tracks_ : nullptr, mixed ? &*mixed : nullptr);
+      });
   if (!ran) synthReport_ = Json::parse(fileBytes(out_ / "synth.report.json"), nullptr, false);
 }
 

@@ -10,18 +10,21 @@
 
 #include "io/bubble_histories.h"
 #include "io/bubble_track_file.h"
+#include "io/contact_log_file.h"
 #include "io/input_error.h"
 #include "io/interruption.h"
 #include "io/scene_file.h"
 #include "io/scene_meshes.h"
 #include "io/text_file.h"
 #include "sim/fluid/simulation_failure.h"
+#include "sim/body_motion.h"
 #include "sim/simulation.h"
 #include "tools/cell_option.h"
 #include "tools/frame_writer.h"
 #include "tools/run_report.h"
 #include "tools/simulate_report.h"
 #include "tools/solver_memory.h"
+#include "tools/stage_progress.h"
 
 namespace fluidsound::tools {
 
@@ -53,6 +56,38 @@ sim::SimulationResult simulateScene(const sim::Scene& scene, const std::string& 
   }
 }
 
+/// The scene's bodies moved by Bullet, with a progress line; a signal stops them (io::Interrupted).
+sim::BodyMotion moveBodies(const sim::Scene& scene, const std::string& sceneFile, bool quiet) {
+  StageProgress observer("bodies", "s", quiet);
+  try {
+    sim::BodyMotion motion = sim::simulateBodies(scene, observer);
+    observer.finish();
+    return motion;
+  } catch (const StageInterrupted& e) {
+    throw io::Interrupted(io::interruptionSignal(), e.what());
+  } catch (const std::invalid_argument& e) {  // a body Bullet cannot take: bad input
+    throw io::InputError(sceneFile, "bodies", "bodies the rigid-body stage can move", e.what());
+  }
+}
+
+/// What report.json says of the bodies: per body its mass, its contacts and where it ended.
+nlohmann::ordered_json bodiesReport(const sim::Scene& scene, const sim::BodyMotion& motion) {
+  nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    std::size_t contacts = 0;
+    for (const sim::ContactRecord& c : motion.contacts.records)
+      contacts += (c.bodyA == int(b) || c.bodyB == int(b)) ? 1 : 0;
+    const Vec3 moved = motion.paths[b].back().translate;
+    bodies.push_back({{"name", scene.bodies[b].name},
+                      {"static", scene.bodies[b].isStatic},
+                      {"mass_kg", motion.contacts.bodies[b].mass},
+                      {"contact_records", contacts},
+                      {"largest_submerged_share", motion.largestSubmergedShare[b]},
+                      {"displacement_m", {moved[0], moved[1], moved[2]}}});
+  }
+  return {{"substep_s", motion.contacts.substep}, {"contact_log", "contacts.bin"}, {"bodies", bodies}};
+}
+
 /// The signal that ended the frames, if any (each written frame is whole); a frame whose writing
 /// it ended is dropped from the result, so that the report lists the frames before it.
 std::optional<io::Interrupted> stopOf(const FrameWriter& writer, sim::SimulationResult& result) {
@@ -76,17 +111,19 @@ SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
   sim::Scene scene = sceneAtCellSize(io::readScene(o.scene), o.cell);
   requireMemoryForGrid(scene, o.scene, o.cell, physicalMemoryBytes());
   io::loadSceneMeshes(scene);
-  if (!scene.bodies.empty() && !o.common.quiet)
-    std::fprintf(stderr,
-                 "fluidsound: note: %s: its %zu bodies are read and checked, but this version does not yet move "
-                 "or sound them (docs/solids.md: `fluidsound modes` lists a body's modes)\n",
-                 o.scene.c_str(), scene.bodies.size());
   const FrameRange range = parseFrameRange(o.frames, sim::lastSceneFrame(scene));
   const std::filesystem::path out = o.output;
   prepareFrameFolder(out, range, o.ply, o.common.quiet);
 
+  // The bodies first: the liquid sees each on the path Bullet gives it (sim/body_motion.h).
+  std::optional<sim::BodyMotion> bodies;
+  if (!scene.bodies.empty()) {
+    bodies = moveBodies(scene, o.scene, o.common.quiet);
+    io::writeContactLog(out / "contacts.bin", bodies->contacts);
+  }
+  const sim::Scene fluidScene = bodies ? sim::sceneWithBodiesAsSolids(scene, *bodies) : scene;
   FrameWriter writer(out / "frames", o.ply, range.last, scene.time.fps, o.common.quiet);
-  sim::SimulationResult result = simulateScene(scene, o.scene, range, writer);
+  sim::SimulationResult result = simulateScene(fluidScene, o.scene, range, writer);
   writer.finish();
   const std::optional<io::Interrupted> interrupted = stopOf(writer, result);
   const auto w0 = Clock::now();
@@ -99,6 +136,7 @@ SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
 
   RunReport report("simulate");
   addSimulationResults(report, o, scene, result);
+  if (bodies) report.resultJson("bodies", bodiesReport(scene, *bodies).dump());
   report.stageSeconds("simulation", result.simulationSeconds);
   report.stageSeconds("bubbles", result.bubbleSeconds);
   report.stageSeconds("output", writeSeconds);

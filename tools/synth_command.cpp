@@ -61,7 +61,40 @@ acoustics::SynthesisStageResult renderWithProgress(const acoustics::BubbleTrackS
 
 }  // namespace
 
-nlohmann::ordered_json renderSynth(const SynthOptions& o, const acoustics::BubbleTrackSet* tracks) {
+namespace {
+
+/// Adds the extra stems into the bubbles' channels (the mix), padding nothing: each stem has the
+/// render's length.
+void mixInto(std::vector<std::vector<float>>& channels, const ExtraStems& extra) {
+  for (const auto& stem : extra.stems)
+    for (std::size_t c = 0; c < channels.size() && c < stem.size(); ++c)
+      for (std::size_t i = 0; i < channels[c].size() && i < stem[c].size(); ++i) channels[c][i] += stem[c][i];
+}
+
+/// Encodes each stem, scaled by the audio's gain, as a 32-bit float WAV in the stem folder.
+nlohmann::ordered_json addStemFiles(io::OutputBatch& outputs, const MixedSources& mixed, double sampleRate,
+                                    const std::vector<std::vector<float>>& bubbles, const ExtraStems& extra,
+                                    double gain, const std::vector<std::string>& channelNames) {
+  nlohmann::ordered_json files = nlohmann::ordered_json::object();
+  const auto add = [&](const std::string& name, const std::vector<std::vector<float>>& stem) {
+    io::AudioBuffer buffer{sampleRate, stem};
+    for (auto& channel : buffer.channels)
+      for (float& x : channel) x = static_cast<float>(x * gain);
+    io::AudioWriteSettings write;
+    write.channelNames = channelNames;
+    const std::filesystem::path path = mixed.stemFolder / (name + ".wav");
+    outputs.add(path, io::encodeAudio(path, buffer, write).bytes);
+    files[name] = path.string();
+  };
+  add("bubbles", bubbles);
+  for (std::size_t k = 0; k < extra.names.size(); ++k) add(extra.names[k], extra.stems[k]);
+  return files;
+}
+
+}  // namespace
+
+nlohmann::ordered_json renderSynth(const SynthOptions& o, const acoustics::BubbleTrackSet* tracks,
+                                   const MixedSources* mixed) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   const std::string reportPath = checkedSynthOutputs(o);  // fail before the render, not after it
@@ -79,12 +112,23 @@ nlohmann::ordered_json renderSynth(const SynthOptions& o, const acoustics::Bubbl
     note(o, std::to_string(r.depthsClamped) + " track sample(s) shallower than 1.25 R: depth shift clamped");
 
   const std::size_t channels = result.channels.size();
+  std::optional<ExtraStems> extra;
+  std::vector<std::vector<float>> bubbles;
+  if (mixed) {
+    extra = mixed->render(static_cast<std::size_t>(r.frames), result.settings.sampleRate);
+    bubbles = result.channels;
+    mixInto(result.channels, *extra);
+  }
   const io::AudioBuffer audio{result.settings.sampleRate, std::move(result.channels)};
   const io::AudioWriteSettings write = audioWriteSettings(o.audio, o.output, acoustics::outputChannelNames(*tracks));
   io::OutputBatch outputs;
   const io::AudioWriteReport w = addSynthFiles(outputs, o, audio, write);
   RunReport report("synth");
   addSynthResults(report, o, {result, channels, tracks->bubbles.size(), write, w});
+  if (extra) {
+    report.resultJson("stems", addStemFiles(outputs, *mixed, audio.sampleRate, bubbles, *extra, w.gain, write.channelNames).dump());
+    report.resultJson("solids", extra->report.dump());
+  }
   report.stageSeconds("read", std::chrono::duration<double>(t1 - t0).count());
   report.stageSeconds("synthesis", result.seconds);
   report.stageSeconds("write", std::chrono::duration<double>(Clock::now() - t2).count());

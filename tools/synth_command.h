@@ -2,9 +2,12 @@
 // its spectrogram (optional) and a report.
 #pragma once
 
+#include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "acoustics/bubble/bubble_track.h"
 #include "acoustics/bubble/oscillator_model.h"
@@ -26,6 +29,24 @@ struct SynthOptions {
 
 CLI::App* addSynthCommand(CLI::App& app, SynthOptions& options);
 
+/// Sound besides the bubbles' (`run`'s solids): stems by name, each one vector per channel [Pa],
+/// in the bubbles' channel order, and what made them for the report.
+struct ExtraStems {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::vector<float>>> stems;
+  nlohmann::ordered_json report = nlohmann::ordered_json::object();
+};
+
+/// How renderSynth mixes other sound with the bubbles': `render` is called after the bubbles' render
+/// with its length [samples] and rate [Hz]; the audio written is the sum of all stems, and each
+/// stem — `bubbles` first — is written to stemFolder/NAME.wav (32-bit float WAV) scaled by the
+/// same gain as the audio, so that the stems sum to it (exactly for a 32-bit float output, up to
+/// dither and quantisation for PCM).
+struct MixedSources {
+  std::function<ExtraStems(std::size_t frames, double sampleRate)> render;
+  std::filesystem::path stemFolder;
+};
+
 /// @brief The synth stage: renders `tracks` (`run`'s, in memory after its transfer stage; null:
 ///        read from options.input) with acoustics::synthesize and writes the audio, the
 ///        spectrogram and the report together.
@@ -33,7 +54,8 @@ CLI::App* addSynthCommand(CLI::App& app, SynthOptions& options);
 /// @throws io::InputError, io::OutputError, CLI::ValidationError; io::Interrupted after a signal
 ///         (nothing written)
 nlohmann::ordered_json renderSynth(const SynthOptions& options,
-                                   const acoustics::BubbleTrackSet* tracks = nullptr);
+                                   const acoustics::BubbleTrackSet* tracks = nullptr,
+                                   const MixedSources* mixed = nullptr);
 
 /// @throws io::InputError, io::OutputError (main turns them into one-line errors)
 int runSynthCommand(const SynthOptions& options);

@@ -66,9 +66,9 @@ TEST(SceneHeads, AnHrtfFileThatIsNotASofaSetIsNamedAtAudioHrtf) {
   EXPECT_EQ(missing.field(), "audio.hrtf");
   EXPECT_NE(std::string(missing.what()).find("no such file"), std::string::npos) << missing.what();
   // The set Debian ships is accepted, by any path.
-  const sim::Scene scene = parseScene(
-      withChange(document, "/audio/hrtf", ("\"" + defaultHrirFile().string() + "\"").c_str()).dump(),
-      folder.path() / "tank.json");
+  const std::string quoted = nlohmann::json(defaultHrirFile().string()).dump();  // a JSON string
+  const sim::Scene scene =
+      parseScene(withChange(document, "/audio/hrtf", quoted.c_str()).dump(), folder.path() / "tank.json");
   EXPECT_EQ(scene.hrtf, defaultHrirFile());
 }
 

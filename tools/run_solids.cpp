@@ -1,0 +1,96 @@
+// tools/run_solids.cpp — see run_solids.h.
+#include "tools/run_solids.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "acoustics/modal/solid_sound.h"
+#include "io/contact_log_file.h"
+#include "io/input_error.h"
+#include "io/interruption.h"
+#include "io/scene_meshes.h"
+#include "tools/body_modes.h"
+#include "tools/stage_progress.h"
+
+namespace fluidsound::tools {
+
+namespace {
+
+/// One position per output channel, in the bubbles' order: a listener's, a head's centre twice.
+std::vector<Eigen::Vector3d> channelPositions(const sim::Scene& scene) {
+  std::vector<Eigen::Vector3d> positions;
+  for (const sim::Listener& l : scene.listeners) {
+    const Eigen::Vector3d x(l.position[0], l.position[1], l.position[2]);
+    positions.push_back(x);
+    if (l.head) positions.push_back(x);
+  }
+  return positions;
+}
+
+}  // namespace
+
+ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& out, std::size_t frames,
+                           double sampleRate, bool quiet) {
+  sim::Scene scene = read;
+  io::loadSceneMeshes(scene);
+  const std::filesystem::path logFile = out / "contacts.bin";
+  const sim::ContactLog log = io::readContactLog(logFile);
+  if (log.bodies.size() != scene.bodies.size())
+    throw io::InputError(logFile.string(), "bodies",
+                         std::to_string(scene.bodies.size()) + " bodies, the scene's (run simulate again)",
+                         std::to_string(log.bodies.size()));
+  nlohmann::ordered_json report;
+  report["contact_records"] = log.records.size();
+  std::vector<BodyModes> modes;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    io::throwIfInterrupted("solids, modes of body " + std::to_string(i));
+    modes.push_back(bodyModes(scene, i, out / "modes", std::min(20000.0, 0.5 * sampleRate)));
+    const BodyModes& m = modes.back();
+    if (!quiet)
+      std::fprintf(stderr, "run: solids: %s: %zu modes (%zu voxels of %.3g mm; cache %s) in %.1f s\n",
+                   scene.bodies[i].name.c_str(), m.model.frequency.size(), m.voxels, m.voxelSize * 1e3,
+                   m.cache.c_str(), m.seconds);
+  }
+  std::vector<acoustics::SoundingBody> bodies;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    bodies.push_back({&modes[i].model, scene.bodies[i].material});
+  acoustics::SolidSoundSettings settings;
+  settings.sampleRate = sampleRate;
+  settings.samples = frames;
+  settings.listeners = channelPositions(scene);
+  StageProgress observer("solids", "bodies", quiet);
+  acoustics::SolidStems stems;
+  try {
+    stems = acoustics::renderSolidSound(log, bodies, settings, observer);
+    observer.finish();
+  } catch (const StageInterrupted& e) {
+    throw io::Interrupted(io::interruptionSignal(), e.what());
+  }
+  report["bodies"] = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const acoustics::SolidBodyReport& r = stems.bodies[i];
+    const BodyModes& m = modes[i];
+    report["bodies"].push_back({{"name", scene.bodies[i].name},
+                                {"static", scene.bodies[i].isStatic},
+                                {"mass_kg", log.bodies[i].mass},
+                                {"voxels", m.voxels},
+                                {"voxel_size_m", m.voxelSize},
+                                {"modes", r.modes},
+                                {"lowest_mode_hz", m.model.frequency.empty() ? 0.0 : m.model.frequency.front()},
+                                {"oscillators", r.oscillators},
+                                {"modes_cache", m.cache},
+                                {"modes_seconds", m.seconds},
+                                {"impacts", r.impacts},
+                                {"rubbing_contacts", r.rubbingContacts},
+                                {"rolling_substeps", r.rollingSubsteps},
+                                {"sliding_substeps", r.slidingSubsteps},
+                                {"stick_slip_breaks", r.stickSlipBreaks},
+                                {"oscillator_samples", r.oscillatorSamples}});
+  }
+  return {{"impacts", "rolling", "friction"},
+          {std::move(stems.impacts), std::move(stems.rolling), std::move(stems.friction)},
+          std::move(report)};
+}
+
+}  // namespace fluidsound::tools
