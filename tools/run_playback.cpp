@@ -5,8 +5,8 @@
 #include <string>
 
 #include "io/audio_file.h"
-#include "io/contact_log_file.h"
 #include "io/input_error.h"
+#include "tools/run_solids.h"
 
 namespace fluidsound::tools {
 
@@ -63,12 +63,7 @@ std::vector<acoustics::CollisionRecordings> readCollisionRecordings(const sim::S
 ExtraStems renderRunPlayback(const sim::Scene& scene, const std::filesystem::path& out, std::size_t frames,
                              double sampleRate, bool quiet) {
   const std::vector<acoustics::CollisionRecordings> recordings = readCollisionRecordings(scene);
-  const std::filesystem::path logFile = out / "contacts.bin";
-  const sim::ContactLog log = io::readContactLog(logFile);
-  if (log.bodies.size() != scene.bodies.size())
-    throw io::InputError(logFile.string(), "bodies",
-                         std::to_string(scene.bodies.size()) + " bodies, the scene's (run simulate again)",
-                         std::to_string(log.bodies.size()));
+  const sim::ContactLog log = readRunContactLog(scene, out);
   const auto recordingsOf = [&](int a, int b) -> const acoustics::CollisionRecordings* {
     const std::string first = materialOf(scene, a), second = materialOf(scene, b);
     for (std::size_t i = 0; i < scene.collisionSamples.size(); ++i) {
@@ -80,10 +75,7 @@ ExtraStems renderRunPlayback(const sim::Scene& scene, const std::filesystem::pat
   acoustics::CollisionPlaybackSettings settings;
   settings.sampleRate = sampleRate;
   settings.samples = frames;
-  for (const sim::Listener& l : scene.listeners) {
-    settings.listeners.push_back({l.position[0], l.position[1], l.position[2]});
-    if (l.head) settings.listeners.push_back({l.position[0], l.position[1], l.position[2]});
-  }
+  settings.listeners = channelPositions(scene);
   acoustics::PlaybackStems stems = acoustics::renderCollisionPlayback(log, recordingsOf, settings);
   if (!quiet)
     std::fprintf(stderr, "run: solids by sample playback: %zu impacts, %zu slide and %zu roll substeps played\n",

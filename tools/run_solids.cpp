@@ -15,31 +15,30 @@
 
 namespace fluidsound::tools {
 
-namespace {
+sim::ContactLog readRunContactLog(const sim::Scene& scene, const std::filesystem::path& out) {
+  const std::filesystem::path file = out / "contacts.bin";
+  sim::ContactLog log = io::readContactLog(file);
+  if (log.bodies.size() != scene.bodies.size())
+    throw io::InputError(file.string(), "bodies",
+                         std::to_string(scene.bodies.size()) + " bodies, the scene's (run simulate again)",
+                         std::to_string(log.bodies.size()));
+  return log;
+}
 
-/// One position per output channel, in the bubbles' order: a listener's, a head's centre twice.
-std::vector<Eigen::Vector3d> channelPositions(const sim::Scene& scene) {
-  std::vector<Eigen::Vector3d> positions;
+std::vector<std::array<double, 3>> channelPositions(const sim::Scene& scene) {
+  std::vector<std::array<double, 3>> positions;
   for (const sim::Listener& l : scene.listeners) {
-    const Eigen::Vector3d x(l.position[0], l.position[1], l.position[2]);
-    positions.push_back(x);
-    if (l.head) positions.push_back(x);
+    positions.push_back({l.position[0], l.position[1], l.position[2]});
+    if (l.head) positions.push_back(positions.back());
   }
   return positions;
 }
-
-}  // namespace
 
 ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& out, std::size_t frames,
                            double sampleRate, bool quiet) {
   sim::Scene scene = read;
   io::loadSceneMeshes(scene);
-  const std::filesystem::path logFile = out / "contacts.bin";
-  const sim::ContactLog log = io::readContactLog(logFile);
-  if (log.bodies.size() != scene.bodies.size())
-    throw io::InputError(logFile.string(), "bodies",
-                         std::to_string(scene.bodies.size()) + " bodies, the scene's (run simulate again)",
-                         std::to_string(log.bodies.size()));
+  const sim::ContactLog log = readRunContactLog(scene, out);
   nlohmann::ordered_json report;
   report["contact_records"] = log.records.size();
   std::vector<BodyModes> modes;
@@ -58,7 +57,7 @@ ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& 
   acoustics::SolidSoundSettings settings;
   settings.sampleRate = sampleRate;
   settings.samples = frames;
-  settings.listeners = channelPositions(scene);
+  for (const std::array<double, 3>& x : channelPositions(scene)) settings.listeners.emplace_back(x[0], x[1], x[2]);
   StageProgress observer("solids", "bodies", quiet);
   acoustics::SolidStems stems;
   try {

@@ -5,12 +5,22 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <filesystem>
+#include <vector>
 
+#include "sim/core/contact_record.h"
 #include "sim/scene.h"
 #include "tools/synth_command.h"
 
 namespace fluidsound::tools {
+
+/// @brief OUTDIR/contacts.bin, checked to be the scene's (one body per scene body).
+/// @throws io::InputError for a log that is missing, damaged or another scene's
+sim::ContactLog readRunContactLog(const sim::Scene& scene, const std::filesystem::path& out);
+
+/// One position per output channel [m], in the bubbles' order: a listener's, a head's centre twice.
+std::vector<std::array<double, 3>> channelPositions(const sim::Scene& scene);
 
 /// @brief The solids' stems of the run in `out`, `frames` samples at `sampleRate` [Hz], one channel
 ///        per listener and two per head (both heard at the head's centre: the solids are not

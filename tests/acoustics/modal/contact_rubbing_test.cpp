@@ -14,20 +14,14 @@
 #include <unsupported/Eigen/FFT>
 
 #include "support/body_contacts.h"
+#include "support/steel_plate_model.h"
 
 namespace fluidsound::acoustics {
 namespace {
 
-/// A static steel plate 0.6 × 0.01 × 0.6 m (body 0, centred at the origin, top at y = 5 mm) and
-/// its modes at 1 cm voxels (only its surface nodes are used here).
+/// A free steel plate 0.6 × 0.01 × 0.6 m, centred on its body's origin: its lowest 4 modes.
 const ModalModel& plateModel() {
-  static const ModalModel model = [] {
-    VoxelSolid plate = voxelBox({0.6, 0.01, 0.6}, 0.01);
-    plate.origin = {-0.3, -0.005, -0.3};
-    ModalSettings settings;
-    settings.maxModes = 4;
-    return analyseModes(plate, *findSolidMaterial("steel"), settings);
-  }();
+  static const ModalModel model = test::steelPlateModel(0.6, 4);
   return model;
 }
 

@@ -12,19 +12,14 @@
 #include "acoustics/modal/voxel_solid.h"
 #include "sim/bodies/rigid_world.h"
 #include "support/body_contacts.h"
+#include "support/steel_plate_model.h"
 
 namespace fluidsound::acoustics {
 namespace {
 
-/// A 0.2 × 0.01 × 0.2 m steel plate's lowest 20 modes, centred on its frame's origin.
+/// A free steel plate 0.2 × 0.01 × 0.2 m, centred on its body's origin: its lowest 20 modes.
 const ModalModel& plateModel() {
-  static const ModalModel model = [] {
-    VoxelSolid plate = voxelBox({0.2, 0.01, 0.2}, 0.01);
-    plate.origin = {-0.1, -0.005, -0.1};
-    ModalSettings settings;
-    settings.maxModes = 20;
-    return analyseModes(plate, *findSolidMaterial("steel"), settings);
-  }();
+  static const ModalModel model = test::steelPlateModel(0.2, 20);
   return model;
 }
 
