@@ -10,7 +10,9 @@
 #include <string>
 #include <variant>
 
+#include "sim/bodies/body_segment.h"
 #include "sim/bodies/rigid_world.h"
+#include "sim/fluid/cell_interpolation.h"
 #include "sim/fluid/solid_rotation.h"
 
 namespace fluidsound::sim {
@@ -37,21 +39,6 @@ Vec3 shapeCentre(const SceneBody& body) {
   for (const auto& v : mesh.vertices)
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(v[a])), hi[a] = std::max(hi[a], double(v[a]));
   return scaled(add(lo, hi), 0.5);
-}
-
-/// Whether a world point lies in one of the scene's initial liquid boxes or spheres.
-bool inStillLiquid(const Scene& scene, const Vec3& p) {
-  for (const LiquidRegion& region : scene.liquid) {
-    if (const auto* box = std::get_if<Box>(&region.shape)) {
-      if (p[0] >= box->min[0] && p[0] <= box->max[0] && p[1] >= box->min[1] && p[1] <= box->max[1] &&
-          p[2] >= box->min[2] && p[2] <= box->max[2])
-        return true;
-    } else if (const auto* sphere = std::get_if<Sphere>(&region.shape)) {
-      const Vec3 d = sub(p, sphere->center);
-      if (dot(d, d) <= sphere->radius * sphere->radius) return true;
-    }
-  }
-  return false;
 }
 
 /// Points filling a body's shape (its frame), each standing for the same volume.
@@ -107,14 +94,14 @@ struct LiquidPush {
   double submergedShare = 0.0;
 };
 
-LiquidPush liquidPush(const Scene& scene, const RigidWorld& world, int body, const std::vector<Vec3>& points,
-                      double volume, const LiquidForces& liquid) {
+LiquidPush liquidPush(const Vec3& gravity, const RigidWorld& world, int body, const std::vector<Vec3>& points,
+                      double volume, const LiquidForces& liquid, const LiquidRegionTest& inLiquid) {
   const BodyPose pose = world.pose(body);
   Vec3 centroid{};
   std::size_t wet = 0;
   for (const Vec3& p : points) {
     const Vec3 x = add(pose.position, rotate(pose.orientation, p));
-    if (inStillLiquid(scene, x)) {
+    if (inLiquid(x)) {
       centroid = add(centroid, x);
       ++wet;
     }
@@ -125,7 +112,7 @@ LiquidPush liquidPush(const Scene& scene, const RigidWorld& world, int body, con
   centroid = scaled(centroid, 1.0 / double(wet));
   const double submerged = volume * push.submergedShare;
   // Archimedes: the displaced liquid's weight, up against gravity, at the submerged centroid.
-  const Vec3 buoyancy = scaled(scene.gravity, -liquid.density * submerged);
+  const Vec3 buoyancy = scaled(gravity, -liquid.density * submerged);
   // Quadratic drag on the sphere of the body's volume, by the submerged share.
   const Vec3 v = world.velocity(body).linear;
   const double radius = std::cbrt(3.0 * volume / (4.0 * std::numbers::pi));
@@ -202,55 +189,135 @@ double contactRadius(const RigidBodySpec& spec) {
   return 0.5 * std::min({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
 }
 
-BodyMotion simulateBodies(const Scene& scene, StageObserver& observer, const LiquidForces& liquid) {
+LiquidRegionTest liquidAround(const Array3f& phi, const GridGeometry& grid, const Vec3& gravity, double reach) {
+  int up = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::abs(gravity[a]) > std::abs(gravity[up])) up = a;
+  const int across1 = (up + 1) % 3, across2 = (up + 2) % 3;
+  return [&phi, &grid, across1, across2, reach](const Vec3& p) {
+    if (interpolateCellCentres(phi, grid, p) < 0.0) return true;
+    int wet = 0;
+    for (const int axis : {across1, across2})
+      for (const double side : {-reach, reach}) {
+        Vec3 q = p;
+        q[axis] += side;
+        wet += interpolateCellCentres(phi, grid, q) < 0.0 ? 1 : 0;
+      }
+    return wet >= 2;
+  };
+}
+
+double largestBodyRadius(const Scene& scene) {
+  double largest = 0.0;
+  for (const SceneBody& body : scene.bodies) largest = std::max(largest, boundingRadius(rigidBodySpec(body)));
+  return largest;
+}
+
+bool inInitialLiquid(const Scene& scene, const Vec3& p) {
+  for (const LiquidRegion& region : scene.liquid) {
+    if (const auto* box = std::get_if<Box>(&region.shape)) {
+      if (p[0] >= box->min[0] && p[0] <= box->max[0] && p[1] >= box->min[1] && p[1] <= box->max[1] &&
+          p[2] >= box->min[2] && p[2] <= box->max[2])
+        return true;
+    } else if (const auto* sphere = std::get_if<Sphere>(&region.shape)) {
+      const Vec3 d = sub(p, sphere->center);
+      if (dot(d, d) <= sphere->radius * sphere->radius) return true;
+    }
+  }
+  return false;
+}
+
+struct BodyStepper::State {
+  std::vector<RigidBodySpec> specs;
+  RigidWorld world;
+  LiquidForces liquid;
+  Vec3 gravity{};
+  BodyMotion motion;
+  std::vector<std::vector<Vec3>> points;  ///< each dynamic body's volume, its frame
+  std::vector<double> volumes;
+  std::vector<Vec3> start;  ///< each body's reference point at t = 0
+  std::int64_t keyEvery = 5;
+
+  State(std::vector<RigidBodySpec> s, const RigidWorldSettings& settings) : specs(s), world(std::move(s), settings) {}
+};
+
+BodyStepper::BodyStepper(const Scene& scene, const LiquidForces& liquid) {
   std::vector<RigidBodySpec> specs;
   for (const SceneBody& body : scene.bodies) specs.push_back(rigidBodySpec(body));
   RigidWorldSettings settings;
   settings.gravity = scene.gravity;
   settings.domain = domainBox(scene.domain);
-  RigidWorld world(specs, settings);
-
-  BodyMotion motion;
-  motion.contacts.substep = world.substep();
-  motion.contacts.duration = scene.time.duration;
-  const int n = world.bodyCount();
-  std::vector<std::vector<Vec3>> points(n);
-  std::vector<double> volumes(n, 0.0);
-  std::vector<Vec3> start(n);
+  state_ = std::make_unique<State>(std::move(specs), settings);
+  State& s = *state_;
+  s.liquid = liquid;
+  s.gravity = scene.gravity;
+  s.motion.contacts.substep = s.world.substep();
+  const int n = s.world.bodyCount();
+  s.points.resize(n);
+  s.volumes.assign(n, 0.0);
+  s.motion.paths.assign(n, {});
+  s.motion.largestSubmergedShare.assign(n, 0.0);
+  s.keyEvery = std::max<std::int64_t>(1, std::llround(s.motion.pathInterval / s.world.substep()));
   for (int b = 0; b < n; ++b) {
-    motion.contacts.bodies.push_back({specs[b].name, world.mass(b), specs[b].isStatic, contactRadius(specs[b])});
-    start[b] = world.pose(b).position;
-    if (!specs[b].isStatic) {
-      points[b] = volumePoints(specs[b], liquid.samplesPerAxis);
-      volumes[b] = shapeVolume(specs[b], points[b], liquid.samplesPerAxis);
+    const RigidBodySpec& spec = s.specs[b];
+    s.motion.contacts.bodies.push_back({spec.name, s.world.mass(b), spec.isStatic, contactRadius(spec)});
+    s.start.push_back(s.world.pose(b).position);
+    s.motion.paths[b].push_back({0.0, {0.0, 0.0, 0.0}});
+    if (!spec.isStatic) {
+      s.points[b] = volumePoints(spec, liquid.samplesPerAxis);
+      s.volumes[b] = shapeVolume(spec, s.points[b], liquid.samplesPerAxis);
     }
   }
-  motion.paths.assign(n, {});
-  motion.largestSubmergedShare.assign(n, 0.0);
-  const auto keyPaths = [&] {
-    for (int b = 0; b < n; ++b) motion.paths[b].push_back({world.time(), sub(world.pose(b).position, start[b])});
-  };
-  const auto substeps = static_cast<std::int64_t>(std::llround(scene.time.duration / world.substep()));
-  const auto keyEvery = static_cast<std::int64_t>(std::llround(motion.pathInterval / world.substep()));
-  observer.started(scene.time.duration);
-  keyPaths();
-  for (std::int64_t s = 0; s < substeps; ++s) {
-    if (s % 10 == 0) {
-      if (observer.wasInterrupted()) throw StageInterrupted("bodies at t = " + std::to_string(world.time()) + " s");
-      observer.progress(double(s) / double(substeps));
-    }
+}
+
+BodyStepper::~BodyStepper() = default;
+BodyStepper::BodyStepper(BodyStepper&&) noexcept = default;
+
+double BodyStepper::time() const { return state_->world.time(); }
+
+std::vector<std::vector<PathKey>> BodyStepper::advanceTo(double time, const LiquidRegionTest& inLiquid) {
+  State& s = *state_;
+  const int n = s.world.bodyCount();
+  std::vector<std::vector<PathKey>> added(n);
+  const auto target = static_cast<std::int64_t>(std::llround(time / s.world.substep()));
+  while (s.world.substepCount() < target) {
     for (int b = 0; b < n; ++b) {
-      if (specs[b].isStatic || scene.liquid.empty()) continue;
-      const LiquidPush push = liquidPush(scene, world, b, points[b], volumes[b], liquid);
-      world.setExternalForce(b, push.force, push.torque);
-      motion.largestSubmergedShare[b] = std::max(motion.largestSubmergedShare[b], push.submergedShare);
+      if (s.specs[b].isStatic) continue;
+      const LiquidPush push = liquidPush(s.gravity, s.world, b, s.points[b], s.volumes[b], s.liquid, inLiquid);
+      s.world.setExternalForce(b, push.force, push.torque);
+      s.motion.largestSubmergedShare[b] = std::max(s.motion.largestSubmergedShare[b], push.submergedShare);
     }
-    world.advance(world.substep());
-    if ((s + 1) % keyEvery == 0 || s + 1 == substeps) keyPaths();
+    s.world.advance(s.world.substep());
+    const std::int64_t done = s.world.substepCount();
+    if (done % s.keyEvery == 0 || done == target)
+      for (int b = 0; b < n; ++b) {
+        const PathKey key{s.world.time(), sub(s.world.pose(b).position, s.start[b])};
+        if (key.time > s.motion.paths[b].back().time) {
+          s.motion.paths[b].push_back(key);
+          added[b].push_back(key);
+        }
+      }
   }
-  observer.progress(1.0);
-  motion.contacts.records = world.takeContacts();
-  return motion;
+  std::vector<ContactRecord> records = s.world.takeContacts();
+  s.motion.contacts.records.insert(s.motion.contacts.records.end(), records.begin(), records.end());
+  s.motion.contacts.duration = s.world.time();
+  return added;
+}
+
+BodyMotion BodyStepper::motion() const { return state_->motion; }
+
+BodyMotion simulateBodies(const Scene& scene, StageObserver& observer, const LiquidForces& liquid) {
+  BodyStepper stepper(scene, liquid);
+  const LiquidRegionTest still = [&scene](const Vec3& p) { return inInitialLiquid(scene, p); };
+  observer.started(scene.time.duration);
+  constexpr double kChunk = 0.01;  // [s] between progress reports and interruption checks
+  const auto chunks = static_cast<long long>(std::ceil(scene.time.duration / kChunk - 1e-9));
+  for (long long c = 1; c <= chunks; ++c) {
+    if (observer.wasInterrupted()) throw StageInterrupted("bodies at t = " + std::to_string(stepper.time()) + " s");
+    stepper.advanceTo(std::min(scene.time.duration, double(c) * kChunk), still);
+    observer.progress(double(c) / double(chunks));
+  }
+  return stepper.motion();
 }
 
 Scene sceneWithBodiesAsSolids(const Scene& scene, const BodyMotion& motion) {

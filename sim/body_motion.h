@@ -3,18 +3,21 @@
 // that the solids' sound is made from and the path on which the liquid solver sees each body
 // (docs/solids.md, "Bodies in run" and "Bodies in the liquid").
 //
-// Coupling, one way each (issue 22): the liquid pushes a body with the buoyancy and drag of the
-// scene's initial liquid regions (boxes and spheres: the still water of a tank or glass, not the
-// splash the body makes), and the body pushes the liquid as a kinematic solid that follows the
-// translation Bullet gives it (its rotation is not seen by the liquid solver, whose solids only
-// translate along a path).
+// Coupling, one way each, frame by frame (issue 22; sim::simulate does it): before each frame the
+// bodies are stepped to its end, pushed by the buoyancy and drag of the liquid the frame before
+// left around them; then the liquid solver sees each as a kinematic solid on the path Bullet gave
+// it (translation only: the solver's solids do not turn).
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "sim/bodies/rigid_body.h"
 #include "sim/core/contact_record.h"
 #include "sim/core/stage_observer.h"
+#include "sim/fluid/array3.h"
+#include "sim/fluid/grid.h"
 #include "sim/scene.h"
 
 namespace fluidsound::sim {
@@ -56,13 +59,54 @@ struct BodyMotion {
   std::vector<double> largestSubmergedShare;
 };
 
-/// @brief Bullet over the scene's duration at 1 ms substeps (the domain's closed faces as walls,
-///        the scene's gravity), each dynamic body pushed by the still liquid every substep
-///        (Archimedes' buoyancy ρ_w·V_sub·(−g) at the submerged centroid, and drag), logging
-///        every contact. Deterministic (RigidWorld's note).
+/// Where the liquid is: true for a world point [m] inside it.
+using LiquidRegionTest = std::function<bool(const Vec3&)>;
+
+/// @brief The scene's bodies in Bullet (1 ms substeps, the domain's closed faces as walls, the
+///        scene's gravity), stepped on demand: each dynamic body pushed every substep by the
+///        liquid that `advanceTo` is told of — Archimedes' buoyancy ρ_w·V_sub·(−g) at the
+///        submerged centroid, and drag — with every contact logged. Deterministic (RigidWorld's
+///        note).
+class BodyStepper {
+ public:
+  /// @throws std::invalid_argument for a body Bullet cannot take (RigidWorld's checks)
+  explicit BodyStepper(const Scene& scene, const LiquidForces& liquid = {});
+  ~BodyStepper();
+  BodyStepper(BodyStepper&&) noexcept;
+  BodyStepper& operator=(BodyStepper&&) = delete;
+  /// @brief Steps the whole substeps up to `time` [s] with the liquid where `inLiquid` says.
+  /// @return each body's path keys added by this call (one list per body)
+  std::vector<std::vector<PathKey>> advanceTo(double time, const LiquidRegionTest& inLiquid);
+  double time() const;
+  /// The motion so far (the contact log's duration: the time stepped to).
+  BodyMotion motion() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+/// @brief The liquid around the bodies as the liquid solver left it: a point is in the liquid
+///        when φ < 0 there, or when at least two of the four points `reach` [m] away from it
+///        across the horizontal (perpendicular to the gravity's main axis) are — a body is a solid
+///        to the solver, so φ inside it is air's, and the level around it stands for the level
+///        through it (as the solver's own pressure φ continues a flat surface through a solid).
+/// @param phi  the solver's liquid φ at cell centres [m] (FluidSolver::liquidDistance); it must
+///        outlive the returned test
+LiquidRegionTest liquidAround(const Array3f& phi, const GridGeometry& grid, const Vec3& gravity, double reach);
+
+/// @return the largest distance of a point of any body from its reference point [m]
+double largestBodyRadius(const Scene& scene);
+
+/// @return whether `p` [m] lies in one of the scene's initial liquid boxes or spheres (its still
+///         water: a tank's, a glass's)
+bool inInitialLiquid(const Scene& scene, const Vec3& p);
+
+/// @brief The bodies alone over the scene's duration, pushed by its still initial liquid
+///        (inInitialLiquid): the stage without the liquid solver (tests, and scenes the liquid
+///        does not reach).
 /// @param observer  progress in simulated seconds; wasInterrupted() every 10 ms stops with
 ///        StageInterrupted("bodies at t = … s")
-/// @throws std::invalid_argument for a body Bullet cannot take (RigidWorld's checks)
 BodyMotion simulateBodies(const Scene& scene, StageObserver& observer, const LiquidForces& liquid = {});
 
 /// @brief The scene with each body added to its solids as a kinematic solid on its path (the

@@ -32,8 +32,10 @@ class FrameLoop {
   FrameLoop(const Scene& scene, SimulationObserver& observer)
       : scene_(scene),
         observer_(observer),
-        solver_(scene),
-        bubbles_(scene.bubbles, scene.seed, scene.gravity) {}
+        bodies_(scene.bodies.empty() ? std::nullopt : std::optional<BodyStepper>(std::in_place, scene)),
+        solver_(bodies_ ? sceneWithBodiesAsSolids(scene, bodies_->motion()) : scene),
+        bubbles_(scene.bubbles, scene.seed, scene.gravity),
+        reach_(largestBodyRadius(scene) + scene.domain.cell) {}
 
   /// Makes frame f (frame 0: the initial state, whose volume is the reference) and records it.
   FrameRecord make(int f, double& bubbleSeconds);
@@ -43,13 +45,29 @@ class FrameLoop {
   }
   const BubbleModel& bubbles() const { return bubbles_; }
   const FluidSolver& solver() const { return solver_; }
+  std::optional<BodyMotion> bodyMotion() const {
+    return bodies_ ? std::optional<BodyMotion>(bodies_->motion()) : std::nullopt;
+  }
 
  private:
+  /// The bodies stepped to `time` in the liquid the solver holds now, their paths handed to it.
+  void moveBodies(double time);
+
   const Scene& scene_;
   SimulationObserver& observer_;
+  std::optional<BodyStepper> bodies_;  // before solver_: its scene holds the bodies as solids
   FluidSolver solver_;
   BubbleModel bubbles_;  // runs inside the loop on the in-memory state (DESIGN.md)
+  double reach_;         // [m] how far across the bodies liquidAround looks
 };
+
+void FrameLoop::moveBodies(double time) {
+  if (!bodies_) return;
+  const LiquidRegionTest around = liquidAround(solver_.liquidDistance(), solver_.grid(), scene_.gravity, reach_);
+  const std::vector<std::vector<PathKey>> keys = bodies_->advanceTo(time, around);
+  for (std::size_t b = 0; b < keys.size(); ++b)
+    if (!scene_.bodies[b].isStatic && !keys[b].empty()) solver_.extendSolidPath(scene_.solids.size() + b, keys[b]);
+}
 
 FrameRecord FrameLoop::make(int f, double& bubbleSeconds) {
   const auto t0 = Clock::now();
@@ -63,6 +81,7 @@ FrameRecord FrameLoop::make(int f, double& bubbleSeconds) {
       bubbles_.step(liquid, t, dt);
     };
     try {
+      moveBodies(f / scene_.time.fps);
       stats = solver_.advanceTo(f / scene_.time.fps, stepBubbles);
     } catch (const SubstepLimitError& e) {
       throw SubstepLimitError("frame " + std::to_string(f) + " needs " + e.what(),
@@ -120,6 +139,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options,
   }
   result.simulationSeconds = loopSeconds - result.bubbleSeconds;
   result.bubbles = loop.bubbles().bubbles();
+  result.bodies = loop.bodyMotion();
   result.grid = loop.solver().grid();
   return result;
 }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "sim/body_motion.h"
 #include "sim/bubbles/bubble_history.h"
 #include "sim/core/stage_observer.h"
 #include "sim/fluid/fluid_solver.h"
@@ -66,13 +67,19 @@ struct SimulationResult {
   std::vector<FrameRecord> frames;     ///< the frames made, 0 … the last (or up to the stop)
   std::optional<SimulationStop> interrupted;
   GridGeometry grid;  ///< the solver's grid
+  /// The scene's bodies as Bullet moved them frame by frame beside the liquid (none without
+  /// bodies): the contact log up to the last frame made, each body's path (sim/body_motion.h).
+  std::optional<BodyMotion> bodies;
   /// Wall time [s]: the solver (and frame 0's volume) without the bubble model; the bubble model
   /// (its substep steps and frame samples); the observer's onFrame calls.
   double simulationSeconds = 0.0, bubbleSeconds = 0.0, observerSeconds = 0.0;
 };
 
 /// @brief Simulates frames 0 … options.lastFrame of a validated scene whose meshes are loaded
-///        (io::loadSceneMeshes): frame 0 is the initial state, frame f ends at f / fps.
+///        (io::loadSceneMeshes): frame 0 is the initial state, frame f ends at f / fps. A scene's
+///        bodies are stepped to each frame's end before the liquid, pushed by the liquid around
+///        them as the frame before left it (liquidAround), and the liquid sees each as a solid on
+///        the path that gives it (sim/body_motion.h).
 ///        Deterministic: the same scene gives the same bits for any thread count.
 /// @throws std::invalid_argument for a frame range outside 0 ≤ first ≤ last ≤ lastSceneFrame
 /// @throws SubstepLimitError as FluidSolver::advanceTo, its message prefixed "frame F needs "

@@ -17,14 +17,12 @@
 #include "io/scene_meshes.h"
 #include "io/text_file.h"
 #include "sim/fluid/simulation_failure.h"
-#include "sim/body_motion.h"
 #include "sim/simulation.h"
 #include "tools/cell_option.h"
 #include "tools/frame_writer.h"
 #include "tools/run_report.h"
 #include "tools/simulate_report.h"
 #include "tools/solver_memory.h"
-#include "tools/stage_progress.h"
 
 namespace fluidsound::tools {
 
@@ -53,20 +51,6 @@ sim::SimulationResult simulateScene(const sim::Scene& scene, const std::string& 
         e.what());
   } catch (const sim::SimulationFailure& e) {  // one line: the scene, the frame, where
     throw sim::SimulationFailure(sceneFile + ": " + e.what());
-  }
-}
-
-/// The scene's bodies moved by Bullet, with a progress line; a signal stops them (io::Interrupted).
-sim::BodyMotion moveBodies(const sim::Scene& scene, const std::string& sceneFile, bool quiet) {
-  StageProgress observer("bodies", "s", quiet);
-  try {
-    sim::BodyMotion motion = sim::simulateBodies(scene, observer);
-    observer.finish();
-    return motion;
-  } catch (const StageInterrupted& e) {
-    throw io::Interrupted(io::interruptionSignal(), e.what());
-  } catch (const std::invalid_argument& e) {  // a body Bullet cannot take: bad input
-    throw io::InputError(sceneFile, "bodies", "bodies the rigid-body stage can move", e.what());
   }
 }
 
@@ -115,15 +99,8 @@ SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
   const std::filesystem::path out = o.output;
   prepareFrameFolder(out, range, o.ply, o.common.quiet);
 
-  // The bodies first: the liquid sees each on the path Bullet gives it (sim/body_motion.h).
-  std::optional<sim::BodyMotion> bodies;
-  if (!scene.bodies.empty()) {
-    bodies = moveBodies(scene, o.scene, o.common.quiet);
-    io::writeContactLog(out / "contacts.bin", bodies->contacts);
-  }
-  const sim::Scene fluidScene = bodies ? sim::sceneWithBodiesAsSolids(scene, *bodies) : scene;
   FrameWriter writer(out / "frames", o.ply, range.last, scene.time.fps, o.common.quiet);
-  sim::SimulationResult result = simulateScene(fluidScene, o.scene, range, writer);
+  sim::SimulationResult result = simulateScene(scene, o.scene, range, writer);
   writer.finish();
   const std::optional<io::Interrupted> interrupted = stopOf(writer, result);
   const auto w0 = Clock::now();
@@ -131,12 +108,13 @@ SimulateOutcome simulateIntoFolder(const SimulateOptions& o) {
   if (!interrupted) {
     outcome.tracks = io::bubbleTracksFromHistories(result.bubbles, scene);
     io::writeBubbleTracks(out / "bubbles.json", outcome.tracks);
+    if (result.bodies) io::writeContactLog(out / "contacts.bin", result.bodies->contacts);
   }
   const double writeSeconds = result.observerSeconds + std::chrono::duration<double>(Clock::now() - w0).count();
 
   RunReport report("simulate");
   addSimulationResults(report, o, scene, result);
-  if (bodies) report.resultJson("bodies", bodiesReport(scene, *bodies).dump());
+  if (result.bodies) report.resultJson("bodies", bodiesReport(scene, *result.bodies).dump());
   report.stageSeconds("simulation", result.simulationSeconds);
   report.stageSeconds("bubbles", result.bubbleSeconds);
   report.stageSeconds("output", writeSeconds);

@@ -124,6 +124,19 @@ struct FluidSolver::Workspace {
   bool solidsMove = false;
 };
 
+void FluidSolver::extendSolidPath(std::size_t solid, std::span<const PathKey> keys) {
+  if (solid >= scene_.solids.size() || scene_.solids[solid].path.empty())
+    throw std::invalid_argument("FluidSolver::extendSolidPath: solid " + std::to_string(solid) +
+                                " is not a solid with a path");
+  std::vector<PathKey>& path = scene_.solids[solid].path;
+  for (const PathKey& key : keys)
+    if (!(key.time > path.back().time))
+      throw std::invalid_argument("FluidSolver::extendSolidPath: keys must come after the path's last");
+    else
+      path.push_back(key);
+  work_->meshWalls.extendPath(solid, keys);
+}
+
 FluidSolver::FluidSolver(const FluidScene& scene, FluidProperties properties)
     : scene_(scene), properties_(properties), grid_(scene.grid()), work_(std::make_unique<Workspace>()) {
   work_->meshes = sceneMeshDistances(scene, grid_);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -99,6 +100,11 @@ class FluidSolver {
   void limitSubstepsPerFrame(int limit) { substepLimit_ = limit; }
 
   double time() const { return time_; }
+  /// @brief Appends keys to the path of the scene's solid `solid` (a body the rigid-body stage
+  ///        moves frame by frame: sim::simulate). The solid must have had a path from the start
+  ///        (so the solver treats the solids as moving), and the keys must come after its last.
+  /// @throws std::invalid_argument otherwise
+  void extendSolidPath(std::size_t solid, std::span<const PathKey> keys);
   const GridGeometry& grid() const { return grid_; }
   const Particles& particles() const { return particles_; }
   /// Face velocity after the last substep [m/s].

@@ -30,6 +30,7 @@ using SceneHandle = std::unique_ptr<RTCSceneTy, SceneRelease>;
 /// One mesh solid: its triangles in its own frame (placed, path translation not applied).
 struct MeshSolid {
   SceneHandle scene;
+  std::size_t sceneIndex = 0;  ///< its place among the scene's solids
   std::vector<PathKey> path;
   Vec3 lower{}, upper{};         ///< bounding box of the triangles in the solid's frame [m]
   std::vector<Vec3> outward;     ///< unit normal of each triangle, out of the solid
@@ -121,17 +122,20 @@ SolidMeshRays::SolidMeshRays(SolidMeshRays&&) noexcept = default;
 SolidMeshRays& SolidMeshRays::operator=(SolidMeshRays&&) noexcept = default;
 
 SolidMeshRays::SolidMeshRays(std::span<const Solid> solids) {
-  std::vector<const Solid*> meshSolids;
-  for (const Solid& s : solids)
-    if (const auto* mesh = std::get_if<MeshFile>(&s.shape); mesh != nullptr && mesh->surface) meshSolids.push_back(&s);
+  std::vector<std::size_t> meshSolids;
+  for (std::size_t i = 0; i < solids.size(); ++i)
+    if (const auto* mesh = std::get_if<MeshFile>(&solids[i].shape); mesh != nullptr && mesh->surface)
+      meshSolids.push_back(i);
   if (meshSolids.empty()) return;
   impl_ = std::make_unique<Impl>();
   impl_->device.reset(rtcNewDevice(nullptr));
   if (!impl_->device)
     throw std::runtime_error("Embree: cannot create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
-  for (const Solid* s : meshSolids) {
+  for (const std::size_t i : meshSolids) {
+    const Solid* s = &solids[i];
     const TriangleMesh& mesh = *std::get<MeshFile>(s->shape).surface;
     MeshSolid solid;
+    solid.sceneIndex = i;
     solid.path = s->path;
     solid.outward = outwardNormals(mesh);
     solid.scene.reset(rtcNewScene(impl_->device.get()));
@@ -166,6 +170,12 @@ SolidMeshRays::SolidMeshRays(std::span<const Solid> solids) {
 }
 
 bool SolidMeshRays::empty() const { return !impl_; }
+
+void SolidMeshRays::extendPath(std::size_t sceneIndex, std::span<const PathKey> keys) {
+  if (!impl_) return;
+  for (MeshSolid& solid : impl_->solids)
+    if (solid.sceneIndex == sceneIndex) solid.path.insert(solid.path.end(), keys.begin(), keys.end());
+}
 
 std::optional<WallStop> SolidMeshRays::firstCrossing(const Vec3& from, const Vec3& to, double timeFrom, double timeTo,
                                                      double offset) const {

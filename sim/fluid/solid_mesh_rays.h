@@ -45,6 +45,9 @@ class SolidMeshRays {
 
   /// True when no mesh solid takes part (queries then always miss, at no cost).
   bool empty() const;
+  /// Appends keys (later than its last) to the path of the scene's solid `sceneIndex`, if it is
+  /// a mesh solid here (FluidSolver::extendSolidPath).
+  void extendPath(std::size_t sceneIndex, std::span<const PathKey> keys);
 
   /// @brief The first mesh surface crossed by a point moving in a straight line from `from` at
   ///        time `timeFrom` to `to` at `timeTo` (relative to each solid's own motion), or nothing.
