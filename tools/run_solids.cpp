@@ -10,6 +10,8 @@
 #include "io/input_error.h"
 #include "io/interruption.h"
 #include "io/scene_meshes.h"
+#include "sim/bodies/body_segment.h"
+#include "sim/body_motion.h"
 #include "tools/body_modes.h"
 #include "tools/stage_progress.h"
 
@@ -58,6 +60,18 @@ ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& 
   settings.sampleRate = sampleRate;
   settings.samples = frames;
   for (const std::array<double, 3>& x : channelPositions(scene)) settings.listeners.emplace_back(x[0], x[1], x[2]);
+  // The static bodies shadow the others where they stand.
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (!scene.bodies[i].isStatic) continue;
+    const sim::RigidBodySpec spec = sim::rigidBodySpec(scene.bodies[i]);
+    settings.occluders.push_back(
+        {static_cast<int>(i),
+         {spec.position[0], spec.position[1], spec.position[2]},
+         sim::boundingRadius(spec),
+         [spec](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+           return sim::segmentCrossesBody(spec, {a.x(), a.y(), a.z()}, {b.x(), b.y(), b.z()});
+         }});
+  }
   StageProgress observer("solids", "bodies", quiet);
   acoustics::SolidStems stems;
   try {

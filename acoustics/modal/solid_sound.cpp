@@ -54,10 +54,19 @@ struct Radiation {
   double delay = 0.0;
 };
 
+/// Gains and delay toward one listener, each mode's gain times its occlusion by the other bodies
+/// on the straight path from the body's surface centroid.
 Radiation radiationFrom(const ModalModel& model, const ModeMultipoles& multipoles, const BodyPlace& place,
-                        const Eigen::Vector3d& listener, const AirProperties& air) {
+                        const Eigen::Vector3d& listener, const SolidSoundSettings& s, int self) {
   const Eigen::Vector3d local = place.orientation.conjugate() * (listener - place.origin);
-  return {radiationGains(model, multipoles, local, air), radiationDelay(multipoles, local, air)};
+  Radiation r{radiationGains(model, multipoles, local, s.air), radiationDelay(multipoles, local, s.air)};
+  if (!s.occluders.empty()) {
+    const Eigen::Vector3d source = place.origin + place.orientation * multipoles.centre;
+    const std::vector<double> factors =
+        occlusionFactors(s.occluders, self, source, listener, model.frequency, s.air.soundSpeed);
+    for (std::size_t j = 0; j < r.gains.size(); ++j) r.gains[j] *= factors[j];
+  }
+  return r;
 }
 
 void addInto(std::vector<float>& stem, const std::vector<float>& part) {
@@ -84,7 +93,7 @@ double hertzDuration(const sim::ContactLog& log, std::span<const SoundingBody> b
 
 /// Renders impacts (in time order) window by window into `stem`, one channel per listener.
 void renderImpacts(std::span<const ModalImpact> impacts, const ModalModel& model, const ModeMultipoles& multipoles,
-                   const BodyPlaces& places, const SolidSoundSettings& s, const ModeGroups* groups,
+                   const BodyPlaces& places, const SolidSoundSettings& s, int self, const ModeGroups* groups,
                    std::vector<std::vector<float>>& stem, SolidBodyReport& report) {
   ModalSynthesisSettings synthesis{s.sampleRate, s.truncation, groups};
   std::size_t first = 0;
@@ -94,7 +103,7 @@ void renderImpacts(std::span<const ModalImpact> impacts, const ModalModel& model
     while (end < impacts.size() && places.windowOf(impacts[end].time) == window) ++end;
     const std::span<const ModalImpact> chunk = impacts.subspan(first, end - first);
     for (std::size_t c = 0; c < s.listeners.size(); ++c) {
-      const Radiation r = radiationFrom(model, multipoles, places.at(window), s.listeners[c], s.air);
+      const Radiation r = radiationFrom(model, multipoles, places.at(window), s.listeners[c], s, self);
       ModalSynthesisStatistics statistics;
       addInto(stem[c], synthesizeModalImpacts(model, chunk, r.gains, s.samples, r.delay, synthesis, &statistics));
       report.oscillatorSamples += statistics.oscillatorSamples;
@@ -129,12 +138,12 @@ struct RubbingForces {
 };
 
 void renderForces(const std::map<long long, std::vector<ModalForce>>& byWindow, const ModalModel& model,
-                  const ModeMultipoles& multipoles, const BodyPlaces& places, const SolidSoundSettings& s,
+                  const ModeMultipoles& multipoles, const BodyPlaces& places, const SolidSoundSettings& s, int self,
                   std::vector<std::vector<float>>& stem) {
   const ModalSynthesisSettings synthesis{s.sampleRate, s.truncation, nullptr};
   for (const auto& [window, forces] : byWindow)
     for (std::size_t c = 0; c < s.listeners.size(); ++c) {
-      const Radiation r = radiationFrom(model, multipoles, places.at(window), s.listeners[c], s.air);
+      const Radiation r = radiationFrom(model, multipoles, places.at(window), s.listeners[c], s, self);
       addInto(stem[c], synthesizeModalForces(model, forces, r.gains, s.samples, r.delay, synthesis));
     }
 }
@@ -156,7 +165,7 @@ void renderBody(const sim::ContactLog& log, std::span<const SoundingBody> bodies
       points, model, detection,
       [&](const BodyContactPoint& p, double speed) { return hertzDuration(log, bodies, b, p, speed); });
   report.impacts = impacts.size();
-  renderImpacts(impacts, model, multipoles, places, s, s.compress ? &groups : nullptr, out.impacts, report);
+  renderImpacts(impacts, model, multipoles, places, s, b, s.compress ? &groups : nullptr, out.impacts, report);
 
   RubbingSettings rubbing = s.rubbing;
   rubbing.sampleRate = s.sampleRate;
@@ -193,12 +202,12 @@ void renderBody(const sim::ContactLog& log, std::span<const SoundingBody> bodies
     const std::vector<ModalImpact> slips = stickSlipImpacts(contact.substeps, stickSlip);
     breaks.insert(breaks.end(), slips.begin(), slips.end());
   }
-  renderForces(forces.rolling, model, multipoles, places, s, out.rolling);
-  renderForces(forces.sliding, model, multipoles, places, s, out.friction);
+  renderForces(forces.rolling, model, multipoles, places, s, b, out.rolling);
+  renderForces(forces.sliding, model, multipoles, places, s, b, out.friction);
   std::stable_sort(breaks.begin(), breaks.end(),
                    [](const ModalImpact& x, const ModalImpact& y) { return x.time < y.time; });
   report.stickSlipBreaks = breaks.size();
-  renderImpacts(breaks, model, multipoles, places, s, s.compress ? &groups : nullptr, out.friction, report);
+  renderImpacts(breaks, model, multipoles, places, s, b, s.compress ? &groups : nullptr, out.friction, report);
 }
 
 }  // namespace

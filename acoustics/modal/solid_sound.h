@@ -8,7 +8,8 @@
 // forces (contact_rubbing.h, surface_roughness.h) of the points that do not close faster than the
 // impact threshold (a closing point's impulse is its impact's), split by their substeps into
 // rolling and sliding; stick–slip breaks of the sliding substeps (stick_slip.h); each radiated to each listener by the
-// compact multipoles of mode_radiation.h from where the body was. A body that moves is heard from
+// compact multipoles of mode_radiation.h from where the body was, shadowed by the other bodies
+// in the way (sound_occlusion.h). A body that moves is heard from
 // its pose at the first contact of each `radiationWindow` (each window's events rung with that
 // pose's gains and delay to their end): a body turning during one ring is not followed.
 #pragma once
@@ -23,6 +24,7 @@
 #include "acoustics/modal/contact_impacts.h"
 #include "acoustics/modal/modal_analysis.h"
 #include "acoustics/modal/solid_material.h"
+#include "acoustics/modal/sound_occlusion.h"
 #include "acoustics/modal/stick_slip.h"
 #include "acoustics/modal/surface_roughness.h"
 #include "sim/core/contact_record.h"
@@ -47,6 +49,8 @@ struct SolidSoundSettings {
   bool compress = true;           ///< group indistinguishable modes (mode_compression.h)
   double radiationWindow = 0.01;  ///< [s]: how often a moving body's pose is taken again
   /// The walls of the domain, for Hertz durations: taken as this body's own material, flat.
+  /// Bodies that shadow the others (sound_occlusion.h): the static ones, where they stand.
+  std::vector<Occluder> occluders;
   ImpactDetection impacts;                 ///< substep taken from the log
   RubbingSettings rubbing;                 ///< sampleRate and substep taken from here and the log
   StickSlipSettings stickSlip;             ///< substep taken from the log
