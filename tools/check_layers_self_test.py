@@ -109,7 +109,7 @@ def link_cases(clean):
     solver_users = sorted(
         (s.relative_to(clean).as_posix(), h, "does not link " + h.rsplit("/", 1)[0])
         for folder in ("io", "tools") for s in layers.folder_sources(clean, folder)
-        for h in layers.project_includes(clean, s) if h.startswith(("sim/fluid/", "sim/bubbles/")))
+        for h in layers.project_includes(clean, s) if h.startswith(("sim/fluid/", "sim/bubbles/", "sim/bodies/")))
     return [
         ("sim links its parts PRIVATE: io's and tools' includes of them are reported",
          lambda c: c.edit("sim/CMakeLists.txt", "fluidsound_sim PUBLIC", "fluidsound_sim PRIVATE"),

@@ -315,7 +315,7 @@ TEST(SceneFile, UnknownTopLevelKeySuggestsTheClosestKnownKey) {
   json document = minimalScene();
   document["gravty"] = {0, -9.81, 0};
   expectError(parseError(document.dump()), "gravty",
-              "one of format, domain, gravity, time, seed, liquid, emitters, solids, bodies, listeners, "
+              "one of format, domain, gravity, time, seed, liquid, emitters, solids, bodies, collision_samples, listeners, "
               "audio, solver, bubbles, transfer (did you mean 'gravity'?), found an unknown key");
 }
 
