@@ -70,7 +70,10 @@ PlaybackStems renderCollisionPlayback(const sim::ContactLog& log,
   const std::vector<std::vector<float>> silence(s.listeners.size(), std::vector<float>(s.samples, 0.0f));
   PlaybackStems out{silence, silence, silence};
   const double dt = log.substep;
-  for (const auto& [pair, steps] : pairSubsteps(log)) {
+  for (const auto& entry : pairSubsteps(log)) {
+    // (named references, not a structured binding: clang 14, the fuzz build's, cannot capture one)
+    const std::pair<int, int>& pair = entry.first;
+    const std::vector<PairSubstep>& steps = entry.second;
     const CollisionRecordings* recordings = recordingsOf(pair.first, pair.second);
     if (!recordings) continue;
     for (const RecordedSound* sound : {&recordings->impact, &recordings->slide, &recordings->roll})
