@@ -15,17 +15,19 @@
 //   header: version, flags, uint32 uncompressed, block and compressed sizes), or size 0 and the
 //   raw array
 // and OpenVDB allocates what the count, the sizes and the blosc header say before reading them.
-// For the grid FrameSurface reads (`surface`, a FloatTree 5-4-3), after its transform
-// (io/Archive.cc, math/Transform.cc, tree/RootNode.h, InternalNode.h, LeafNode.h,
-// io/Compression.h):
+// For every float and Vec3 grid (a FloatTree or Vec3STree 5-4-3: the `surface` FrameSurface reads,
+// a cache's `velocity`), after its transform (io/Archive.cc, math/Transform.cc, tree/RootNode.h,
+// InternalNode.h, LeafNode.h, io/Compression.h); a value is 4 or 12 bytes, and in the compressed
+// value arrays 2 or 6 when the grid is saved as half floats (its type ends "_HalfFloat" and its
+// metadata says is_saved_as_half_float; an array of no values is then not written at all):
 //   transform:  string map type, then the map's fixed-size values
-//   topology:   int32 buffer count, float background, uint32 tile and child counts, tiles
-//               (int32 × 3 origin, float, bool), children (int32 × 3 origin, internal node 5)
+//   topology:   int32 buffer count, a value (background), uint32 tile and child counts, tiles
+//               (int32 × 3 origin, a value, bool), children (int32 × 3 origin, internal node 5)
 //   internal N: child mask, value mask (2^(3N) bits each), compressed values, then each child
 //   leaf:       value mask (512 bits); its values come after the topology, at the block offset,
 //               leaf by leaf (root children in origin order): value mask again, compressed values
-//   compressed values: int8 kind, 0–2 floats, maybe a selection mask, then the data: with blosc
-//               or zip an int64 size (≤ 0: that many raw bytes, negated), else raw floats
+//   compressed values: int8 kind, 0–2 values, maybe a selection mask, then the data: with blosc
+//               or zip an int64 size (≤ 0: that many raw bytes, negated), else raw values
 #include "io/vdb_file_check.h"
 
 #include <array>
@@ -203,7 +205,8 @@ void checkDelayedLoad(HeaderReader& in, const std::string& field) {
 
 /// One metadata entry's value: a uint32 size within the part read, then the bytes, which must
 /// be what OpenVDB will read for the entry's type.
-void checkMetadataValue(HeaderReader& in, const std::string& field, const std::string& type) {
+/// @return the value when it is a bool (1 byte), else false
+bool checkMetadataValue(HeaderReader& in, const std::string& field, const std::string& type) {
   const std::int64_t size = in.number<std::uint32_t>(field + " size");
   const std::int64_t left = in.left();
   if (size > left)
@@ -215,25 +218,34 @@ void checkMetadataValue(HeaderReader& in, const std::string& field, const std::s
     in.fail(field + " size", std::to_string(fixed) + " bytes (the size of type " + type + ")",
             std::to_string(size));
   const std::int64_t valueEnd = in.position() + size;
+  bool value = false;
   if (type == "__delayedload" && size > 0) {  // OpenVDB reads nothing for an empty one
     const std::int64_t partEnd = in.end();
     in.limitTo(valueEnd);
     checkDelayedLoad(in, field);
     in.limitTo(partEnd);
+  } else if (type == "bool") {
+    value = in.number<char>(field) != 0;
   }
   in.seek(valueEnd);
+  return value;
 }
 
 /// A metadata block: int32 count, then name, type and sized value per entry.
-void checkMetadata(HeaderReader& in, const std::string& field) {
+/// @return whether it says `is_saved_as_half_float` true (a grid's values stored as 16-bit
+///         halves: Grid::readBuffers, io::getHalfFloat)
+bool checkMetadata(HeaderReader& in, const std::string& field) {
   // Each entry holds at least two string lengths and a value size.
   const std::int64_t entries = in.count(field + " count", 12);
+  bool half = false;
   for (std::int64_t i = 0; i < entries; ++i) {
     const std::string entry = field + "[" + std::to_string(i) + "]";
-    in.string(entry + " name");
+    const std::string name = in.string(entry + " name");
     const std::string type = in.string(entry + " type");
-    checkMetadataValue(in, entry + " value", type);
+    const bool value = checkMetadataValue(in, entry + " value", type);
+    if (name == "is_saved_as_half_float" && type == "bool") half = value;
   }
+  return half;
 }
 
 constexpr std::uint32_t kZip = 1, kActiveMask = 2, kBlosc = 4;  // io::COMPRESS_*
@@ -254,15 +266,26 @@ std::int64_t countOn(const NodeMask& mask) {
   return count;
 }
 
-/// io::readCompressedValues for floats: `values` per node, `mask` the node's value mask.
+/// How a tree's values are stored: a value's bytes in memory (the background, tiles and inactive
+/// values are written so) and in the value arrays (half that when saved as half floats).
+struct ValueLayout {
+  std::int64_t valueBytes = 4;
+  std::int64_t storedBytes = 4;
+};
+
+/// io::readCompressedValues: `values` per node, `mask` the node's value mask.
 void checkValues(HeaderReader& in, const std::string& field, std::uint32_t compression,
-                 std::int64_t values, const NodeMask& mask) {
+                 std::int64_t values, const NodeMask& mask, const ValueLayout& layout) {
   const auto kind = in.number<std::int8_t>(field + " kind");
-  if (kind == 2 || kind == 4 || kind == 5) in.skip(field + " inactive value", kind == 5 ? 8 : 4);
+  if (kind == 2 || kind == 4 || kind == 5)
+    in.skip(field + " inactive value", (kind == 5 ? 2 : 1) * layout.valueBytes);
   if (kind == 3 || kind == 4 || kind == 5) in.skip(field + " selection mask", values / 8);
   const std::int64_t count =
       (compression & kActiveMask) && kind != kAllValues ? countOn(mask) : values;
-  const std::int64_t bytes = count * 4;
+  const std::int64_t bytes = count * layout.storedBytes;
+  // Half floats: nothing at all for no values, not even a size (io::HalfWriter/HalfReader return
+  // early for a count below 1).
+  if (layout.storedBytes != layout.valueBytes && count == 0) return;
   if (!(compression & (kZip | kBlosc))) return in.skip(field + " data", bytes);
   const auto size = in.number<std::int64_t>(field + " size");
   if (size <= 0 && size != -bytes)
@@ -275,17 +298,17 @@ void checkValues(HeaderReader& in, const std::string& field, std::uint32_t compr
 /// An internal node of log2 size `log2Dim` (5 or 4) and everything below it; the leaves' value
 /// masks are appended to `leaves` in the order their values follow the topology.
 void checkInternalNode(HeaderReader& in, const std::string& field, std::uint32_t compression,
-                       int log2Dim, std::vector<NodeMask>& leaves) {
+                       const ValueLayout& layout, int log2Dim, std::vector<NodeMask>& leaves) {
   const std::int64_t values = std::int64_t{1} << (3 * log2Dim);
   const NodeMask children = readMask(in, field + " child mask", values);
   const NodeMask active = readMask(in, field + " value mask", values);
-  checkValues(in, field + " values", compression, values, active);
+  checkValues(in, field + " values", compression, values, active, layout);
   for (std::size_t word = 0; word < children.size(); ++word)
     for (std::uint64_t bits = children[word]; bits != 0; bits &= bits - 1) {
       if (log2Dim == 4) {
         leaves.push_back(readMask(in, field + " leaf mask", 512));
       } else {
-        checkInternalNode(in, field, compression, log2Dim - 1, leaves);
+        checkInternalNode(in, field, compression, layout, log2Dim - 1, leaves);
       }
     }
 }
@@ -299,19 +322,20 @@ std::int64_t mapBytes(const std::string& type) {
   return -1;
 }
 
-/// The transform's values, topology and leaf values of the `surface` grid, after its transform's
-/// map type `map`.
-void checkSurfaceTree(HeaderReader& in, const std::string& grid, const std::string& map,
-                      std::uint32_t compression, std::int64_t blockOffset, std::int64_t endOffset) {
+/// The transform's values, topology and leaf values of a float or Vec3 grid, after its
+/// transform's map type `map`.
+void checkTree(HeaderReader& in, const std::string& grid, const std::string& map, std::uint32_t compression,
+               const ValueLayout& layout, std::int64_t blockOffset, std::int64_t endOffset) {
   const std::int64_t bytes = mapBytes(map);
   if (bytes < 0)
     in.fail(grid + " transform", "a scale, translation or affine map", "'" + map + "'");
   in.skip(grid + " transform", bytes);
   in.skip(grid + " buffer count", 4);
-  in.skip(grid + " background", 4);
+  in.skip(grid + " background", layout.valueBytes);
   const auto tiles = in.number<std::uint32_t>(grid + " tile count");
   const auto children = in.number<std::uint32_t>(grid + " child count");
-  if (tiles > 0) in.skip(grid + " tiles", std::int64_t{tiles} * 17);
+  // A tile: its origin (3 int32), its value, its active flag.
+  if (tiles > 0) in.skip(grid + " tiles", std::int64_t{tiles} * (12 + layout.valueBytes + 1));
   // Root children are kept by origin (a later one replaces an earlier one at the same origin),
   // and their leaves' values follow in origin order.
   std::map<std::tuple<std::int32_t, std::int32_t, std::int32_t>, std::vector<NodeMask>> roots;
@@ -320,7 +344,7 @@ void checkSurfaceTree(HeaderReader& in, const std::string& grid, const std::stri
     std::array<std::int32_t, 3> origin{};
     in.bytes(child + " origin", reinterpret_cast<char*>(origin.data()), 12);
     std::vector<NodeMask> leaves;
-    checkInternalNode(in, child, compression, 5, leaves);
+    checkInternalNode(in, child, compression, layout, 5, leaves);
     roots[{origin[0], origin[1], origin[2]}] = std::move(leaves);
   }
   // OpenVDB reads the leaves' values right after the topology (io::Archive::readGrid), not at
@@ -337,22 +361,27 @@ void checkSurfaceTree(HeaderReader& in, const std::string& grid, const std::stri
       const std::string leaf = grid + " leaf " + std::to_string(index++);
       if (readMask(in, leaf + " value mask", 512) != mask)
         in.fail(leaf + " value mask", "the mask of the topology", "another");
-      checkValues(in, leaf + " values", compression, 512, mask);
+      checkValues(in, leaf + " values", compression, 512, mask, layout);
     }
 }
 
-/// One grid descriptor, and the metadata block and transform type at its grid offset (for
-/// `surface`, its whole tree); leaves `in` at the next descriptor.
+/// One grid descriptor, and the metadata block and transform type at its grid offset (for a float
+/// or Vec3 grid, its whole tree); leaves `in` at the next descriptor.
 void checkGrid(HeaderReader& in, std::int64_t index) {
   const std::string grid = "grid " + std::to_string(index);
   const std::string name = in.string(grid + " name");
-  const std::string type = in.string(grid + " type");
+  const std::string writtenType = in.string(grid + " type");
   const std::string parent = in.string(grid + " instance parent");
+  // A grid saved as half floats has "_HalfFloat" after its type (io::GridDescriptor).
+  const std::string halfSuffix = "_HalfFloat";
+  const bool halfType = writtenType.size() > halfSuffix.size() &&
+                        writtenType.compare(writtenType.size() - halfSuffix.size(), halfSuffix.size(), halfSuffix) == 0;
+  const std::string type = halfType ? writtenType.substr(0, writtenType.size() - halfSuffix.size()) : writtenType;
   // io::File::readGrid("surface") reads the grid of that name (a unique name adds "\x03" and
   // an index to it).
   const bool surface = name.substr(0, name.find('\x03')) == "surface";
   if (surface && (type != "Tree_float_5_4_3" || !parent.empty()))
-    in.fail(grid + " type", "a FloatGrid (Tree_float_5_4_3, not an instance)", "'" + type + "'");
+    in.fail(grid + " type", "a FloatGrid (Tree_float_5_4_3, not an instance)", "'" + writtenType + "'");
   const std::int64_t descriptorEnd = in.position() + 24;
   const auto gridOffset = in.number<std::int64_t>(grid + " grid offset");
   const auto blockOffset = in.number<std::int64_t>(grid + " block offset");
@@ -367,9 +396,13 @@ void checkGrid(HeaderReader& in, std::int64_t index) {
   in.seek(gridOffset);
   in.limitTo(blockOffset);
   const auto compression = in.number<std::uint32_t>(grid + " compression");
-  checkMetadata(in, grid + " metadata");
+  const bool half = checkMetadata(in, grid + " metadata") || halfType;
   const std::string map = in.string(grid + " transform");  // every grid has one, instances too
-  if (surface) checkSurfaceTree(in, grid, map, compression, blockOffset, endOffset);
+  // The trees of float and Vec3 grids (a level set, a velocity), each value 4 or 12 bytes, 2 or 6
+  // when saved as half floats; an instance shares its parent's tree and has none of its own.
+  const std::int64_t valueBytes = type == "Tree_float_5_4_3" ? 4 : type == "Tree_vec3s_5_4_3" ? 12 : 0;
+  if (valueBytes > 0 && parent.empty())
+    checkTree(in, grid, map, compression, {valueBytes, half ? valueBytes / 2 : valueBytes}, blockOffset, endOffset);
   in.limitTo(in.size());
   in.seek(endOffset);
 }

@@ -14,8 +14,9 @@ namespace fluidsound::io {
 ///        offsets in order), each grid's own metadata block and transform type. Every metadata
 ///        value must be what OpenVDB reads for its type: a fixed-size type's own size, and a
 ///        delayed-load table's node count, array sizes and blosc headers within the value. For
-///        the grid named `surface` (a FloatGrid), also its transform, topology and every leaf's
-///        values; the other grids' trees are not checked.
+///        every float and Vec3 grid (a level set, a velocity; values saved full or as half
+///        floats), also its transform, topology and every leaf's values; the grid named
+///        `surface` must be a FloatGrid. Other grids' trees (points) are not checked.
 /// @param path  the file; named in messages as given
 /// @throws InputError naming the file and the part of it, e.g.
 ///         `0000.vdb: grid 0 name: expected a length within the file (at most 89000 bytes left),

@@ -357,3 +357,54 @@ TEST(VdbFileCheck, TruncatedOrDamagedFrameIsAnInputError) {
 
 }  // namespace
 }  // namespace fluidsound::io
+
+#include <openvdb/openvdb.h>
+
+namespace fluidsound::io {
+namespace {
+
+/// A file holding one Vec3 grid `velocity` (a 16³ block of active voxels, OpenVDB's default
+/// compression), its values saved as half floats when `half`.
+std::string velocityFileBytes(const test::TempFolder& folder, bool half) {
+  openvdb::initialize();
+  auto grid = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f));
+  grid->setName("velocity");
+  grid->setSaveFloatAsHalf(half);
+  auto accessor = grid->getAccessor();
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j)
+      for (int k = 0; k < 16; ++k) accessor.setValue({i, j, k}, openvdb::Vec3s(0.1f * i, -0.2f * j, 0.3f * k));
+  const auto path = folder.path() / (half ? "half.vdb" : "full.vdb");
+  openvdb::io::File(path.string()).write({grid});
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Claim: the trees of Vec3 grids (a cache's velocity) are checked as the level set's are — the
+// values 12 bytes each, 6 when saved as half floats (Houdini's default; OpenVDB's
+// is_saved_as_half_float) — so a file OpenVDB wrote passes either way, and a leaf whose
+// compressed size says more than its grid holds is refused naming the leaf before OpenVDB
+// allocates it (the gap from-cache had: a crafted velocity grid ended as std::bad_alloc, exit 5).
+// Reference: the layout of the leaves' values after the topology (io/Compression.h): the value
+// mask (64 bytes), the kind byte, then the int64 compressed size.
+TEST(VdbFileCheck, ChecksVec3TreesFullAndHalf) {
+  test::TempFolder folder;
+  for (const bool half : {false, true}) {
+    std::string bytes = velocityFileBytes(folder, half);
+    EXPECT_NO_THROW(requireIntactVdbFile(writeBytes(folder, bytes))) << "half " << half;
+    const std::size_t name = bytes.find(std::string("\x08\0\0\0velocity", 12));
+    ASSERT_NE(name, std::string::npos);
+    // The type as written: "_HalfFloat" after it for a grid saved as half floats.
+    const std::string type = half ? "Tree_vec3s_5_4_3_HalfFloat" : "Tree_vec3s_5_4_3";
+    ASSERT_EQ(get<std::uint32_t>(bytes, name + 12), type.size());
+    ASSERT_EQ(bytes.substr(name + 16, type.size()), type);
+    const std::size_t offsets = name + 4 + 8 + 4 + type.size() + 4;
+    const auto block = static_cast<std::size_t>(get<std::int64_t>(bytes, offsets + 8));
+    put<std::int64_t>(bytes, block + 64 + 1, std::int64_t{1} << 40);  // the first leaf's compressed size
+    const InputError error = checkError(writeBytes(folder, bytes));
+    EXPECT_EQ(error.field(), "grid 0 leaf 0 values data") << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace fluidsound::io
