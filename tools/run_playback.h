@@ -19,7 +19,8 @@ namespace fluidsound::tools {
 std::vector<acoustics::CollisionRecordings> readCollisionRecordings(const sim::Scene& scene);
 
 /// @brief The playback stems of the run in `out`, `frames` samples at `sampleRate` [Hz], one
-///        channel per listener, two per head (both at its centre), as renderRunSolids's.
+///        channel per listener, two per head (both the recording at the head's centre: playback is
+///        not rendered through the HRTF), as renderRunSolids's.
 /// @throws io::InputError as readCollisionRecordings, or for a contact log that is not the scene's
 ExtraStems renderRunPlayback(const sim::Scene& scene, const std::filesystem::path& out, std::size_t frames,
                              double sampleRate, bool quiet);

@@ -3,10 +3,15 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "acoustics/modal/solid_sound.h"
+#include "acoustics/binaural/hrir_convolution.h"
+#include "acoustics/binaural/hrir_table.h"
+#include "acoustics/modal/body_contact_points.h"
 #include "io/contact_log_file.h"
+#include "io/hrir_file.h"
 #include "io/input_error.h"
 #include "io/interruption.h"
 #include "io/scene_meshes.h"
@@ -34,6 +39,62 @@ std::vector<std::array<double, 3>> channelPositions(const sim::Scene& scene) {
     if (l.head) positions.push_back(positions.back());
   }
   return positions;
+}
+
+namespace {
+
+/// Where body `b` is heard from: a static body's centre, a moving one's place at its first contact.
+Eigen::Vector3d heardFrom(const sim::Scene& scene, const sim::ContactLog& log, std::size_t b) {
+  const sim::RigidBodySpec spec = sim::rigidBodySpec(scene.bodies[b]);
+  if (!spec.isStatic) {
+    const std::vector<acoustics::BodyContactPoint> points = acoustics::bodyContactPoints(log, static_cast<int>(b));
+    if (!points.empty()) return points.front().origin;
+  }
+  return {spec.position[0], spec.position[1], spec.position[2]};
+}
+
+}  // namespace
+
+void hearWithHeads(const sim::Scene& scene, const sim::ContactLog& log,
+                   const std::vector<acoustics::SoundingBody>& bodies, const acoustics::SolidSoundSettings& settings,
+                   acoustics::SolidStems& stems) {
+  std::size_t channel = 0;
+  std::optional<acoustics::HrirTable> table;
+  for (const sim::Listener& listener : scene.listeners) {
+    if (!listener.head) {
+      ++channel;
+      continue;
+    }
+    if (!table) table = io::readHrirTable(scene.hrtf.value_or(io::defaultHrirFile()), settings.sampleRate);
+    const double gain = acoustics::freeFieldGain(*table);
+    const Eigen::Vector3d centre(listener.position[0], listener.position[1], listener.position[2]);
+    const std::size_t n = settings.samples;
+    std::array<std::vector<double>, 3> left, right;  // impacts, rolling, friction
+    for (std::size_t k = 0; k < 3; ++k) left[k].assign(n, 0.0), right[k].assign(n, 0.0);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (!bodies[b].model || bodies[b].model->frequency.empty()) continue;
+      // This body alone at the head's centre, then through the pair of the direction it is in.
+      std::vector<acoustics::SoundingBody> alone = bodies;
+      for (std::size_t other = 0; other < alone.size(); ++other)
+        if (other != b) alone[other].model = nullptr;
+      acoustics::SolidSoundSettings atCentre = settings;
+      atCentre.listeners = {centre};
+      StageObserver quiet;
+      const acoustics::SolidStems heard = acoustics::renderSolidSound(log, alone, atCentre, quiet);
+      const Eigen::Vector3d towards = heardFrom(scene, log, b) - centre;
+      const std::size_t direction = acoustics::nearestDirection(
+          *table, acoustics::headDirection({towards.x(), towards.y(), towards.z()}, listener.head->facing,
+                                           listener.head->up));
+      const std::array<const std::vector<float>*, 3> mono = {&heard.impacts[0], &heard.rolling[0], &heard.friction[0]};
+      for (std::size_t k = 0; k < 3; ++k) acoustics::addHeardFrom(*table, direction, *mono[k], gain, left[k], right[k]);
+    }
+    const std::array<std::vector<std::vector<float>>*, 3> stem = {&stems.impacts, &stems.rolling, &stems.friction};
+    for (std::size_t k = 0; k < 3; ++k) {
+      (*stem[k])[channel].assign(left[k].begin(), left[k].end());
+      (*stem[k])[channel + 1].assign(right[k].begin(), right[k].end());
+    }
+    channel += 2;
+  }
 }
 
 ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& out, std::size_t frames,
@@ -80,6 +141,7 @@ ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& 
   } catch (const StageInterrupted& e) {
     throw io::Interrupted(io::interruptionSignal(), e.what());
   }
+  hearWithHeads(scene, log, bodies, settings, stems);
   report["bodies"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const acoustics::SolidBodyReport& r = stems.bodies[i];

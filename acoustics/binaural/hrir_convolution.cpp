@@ -2,6 +2,7 @@
 #include "acoustics/binaural/hrir_convolution.h"
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <unsupported/Eigen/FFT>
 #include <vector>
@@ -47,6 +48,15 @@ void addConvolution(std::span<const float> signal, std::span<const float> respon
     const std::size_t length = std::min(count + response.size() - 1, out.size() - first);
     for (std::size_t n = 0; n < length; ++n) out[first + n] += gain * result[n];
   }
+}
+
+void addHeardFrom(const HrirTable& table, std::size_t direction, std::span<const float> signal, double gain,
+                  std::span<double> left, std::span<double> right) {
+  const auto samples = [&table](double delay) {
+    return static_cast<std::size_t>(std::lround(std::max(0.0, delay) * table.sampleRate));
+  };
+  addConvolution(signal, table.left[direction], samples(table.delayLeft[direction]), gain, left);
+  addConvolution(signal, table.right[direction], samples(table.delayRight[direction]), gain, right);
 }
 
 }  // namespace fluidsound::acoustics
