@@ -12,6 +12,7 @@
 
 #include "sim/bodies/body_segment.h"
 #include "sim/bodies/rigid_world.h"
+#include "sim/core/vec3_math.h"
 #include "sim/fluid/cell_interpolation.h"
 #include "sim/fluid/solid_rotation.h"
 
@@ -19,13 +20,6 @@ namespace fluidsound::sim {
 
 namespace {
 
-Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 scaled(const Vec3& a, double s) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 /// The placed shape's centre c₁ (scaled) and, for a mesh, its scaled vertices' bounds.
 Vec3 shapeCentre(const SceneBody& body) {
@@ -41,49 +35,18 @@ Vec3 shapeCentre(const SceneBody& body) {
   return scaled(add(lo, hi), 0.5);
 }
 
-/// Points filling a body's shape (its frame), each standing for the same volume.
+/// Points filling a body's shape (its frame), each standing for the same volume: the centres of
+/// an n³ lattice over its bounding box that lie inside it (nudged off symmetry planes, so that no
+/// point lies on a mesh's edge for the ray test).
 std::vector<Vec3> volumePoints(const RigidBodySpec& spec, int perAxis) {
-  Vec3 half{};
-  std::function<bool(const Vec3&)> inside;
-  if (const auto* sphere = std::get_if<SphereShape>(&spec.shape)) {
-    half = {sphere->radius, sphere->radius, sphere->radius};
-    const double r2 = sphere->radius * sphere->radius;
-    inside = [r2](const Vec3& p) { return dot(p, p) <= r2; };
-  } else if (const auto* box = std::get_if<BoxShape>(&spec.shape)) {
-    half = box->halfExtents;
-    inside = [](const Vec3&) { return true; };
-  } else {
-    const TriangleMesh& mesh = std::get<TriangleMesh>(spec.shape);
-    for (const auto& v : mesh.vertices)
-      for (int a = 0; a < 3; ++a) half[a] = std::max(half[a], std::abs(double(v[a])));
-    // Inside by the parity of crossings of a ray along +x (a closed mesh, checked when read).
-    inside = [&mesh](const Vec3& p) {
-      bool in = false;
-      for (const auto& t : mesh.triangles) {
-        const auto& a = mesh.vertices[t[0]];
-        const auto& b = mesh.vertices[t[1]];
-        const auto& c = mesh.vertices[t[2]];
-        // Barycentric test of (p.y, p.z) in the triangle's projection on the y–z plane.
-        const double d = (b[1] - a[1]) * (c[2] - a[2]) - (c[1] - a[1]) * (b[2] - a[2]);
-        if (d == 0.0) continue;
-        const double u = ((p[1] - a[1]) * (c[2] - a[2]) - (c[1] - a[1]) * (p[2] - a[2])) / d;
-        const double w = ((b[1] - a[1]) * (p[2] - a[2]) - (p[1] - a[1]) * (b[2] - a[2])) / d;
-        if (u < 0.0 || w < 0.0 || u + w > 1.0) continue;
-        const double x = a[0] + u * (b[0] - a[0]) + w * (c[0] - a[0]);
-        if (x > p[0]) in = !in;
-      }
-      return in;
-    };
-  }
+  const Vec3 half = boundingHalfExtents(spec);
+  const auto at = [perAxis](double h, int i, double nudge) { return h * ((2.0 * i + 1.0) / perAxis - 1.0 + nudge); };
   std::vector<Vec3> points;
   for (int i = 0; i < perAxis; ++i)
     for (int j = 0; j < perAxis; ++j)
       for (int k = 0; k < perAxis; ++k) {
-        // Cell centres of an n³ lattice over the box, nudged off symmetry planes for the ray test.
-        const Vec3 p{half[0] * ((2.0 * i + 1.0) / perAxis - 1.0) + 1e-9 * half[0],
-                     half[1] * ((2.0 * j + 1.0) / perAxis - 1.0) + 1.3e-9 * half[1],
-                     half[2] * ((2.0 * k + 1.0) / perAxis - 1.0) + 0.7e-9 * half[2]};
-        if (inside(p)) points.push_back(p);
+        const Vec3 p{at(half[0], i, 1e-9), at(half[1], j, 1.3e-9), at(half[2], k, 0.7e-9)};
+        if (bodyContainsPoint(spec, p)) points.push_back(p);
       }
   return points;
 }
@@ -122,17 +85,6 @@ LiquidPush liquidPush(const Vec3& gravity, const RigidWorld& world, int body, co
   push.force = add(buoyancy, drag);
   push.torque = cross(sub(centroid, world.centreOfMass(body)), buoyancy);
   return push;
-}
-
-double shapeVolume(const RigidBodySpec& spec, const std::vector<Vec3>& points, int perAxis) {
-  if (const auto* sphere = std::get_if<SphereShape>(&spec.shape))
-    return 4.0 / 3.0 * std::numbers::pi * std::pow(sphere->radius, 3);
-  if (const auto* box = std::get_if<BoxShape>(&spec.shape))
-    return 8.0 * box->halfExtents[0] * box->halfExtents[1] * box->halfExtents[2];
-  Vec3 half{};
-  for (const auto& v : std::get<TriangleMesh>(spec.shape).vertices)
-    for (int a = 0; a < 3; ++a) half[a] = std::max(half[a], std::abs(double(v[a])));
-  return 8.0 * half[0] * half[1] * half[2] * double(points.size()) / std::pow(double(perAxis), 3);
 }
 
 DomainBox domainBox(const Domain& domain) {
@@ -179,14 +131,8 @@ RigidBodySpec rigidBodySpec(const SceneBody& body) {
 
 double contactRadius(const RigidBodySpec& spec) {
   if (const auto* sphere = std::get_if<SphereShape>(&spec.shape)) return sphere->radius;
-  if (const auto* box = std::get_if<BoxShape>(&spec.shape))
-    return std::min({box->halfExtents[0], box->halfExtents[1], box->halfExtents[2]});
-  Vec3 lo{}, hi{};
-  lo.fill(std::numeric_limits<double>::max());
-  hi.fill(-std::numeric_limits<double>::max());
-  for (const auto& v : std::get<TriangleMesh>(spec.shape).vertices)
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(v[a])), hi[a] = std::max(hi[a], double(v[a]));
-  return 0.5 * std::min({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  const Vec3 half = boundingHalfExtents(spec);
+  return std::min({half[0], half[1], half[2]});
 }
 
 LiquidRegionTest liquidAround(const Array3f& phi, const GridGeometry& grid, const Vec3& gravity, double reach) {
@@ -265,7 +211,7 @@ BodyStepper::BodyStepper(const Scene& scene, const LiquidForces& liquid) {
     s.motion.paths[b].push_back({0.0, {0.0, 0.0, 0.0}});
     if (!spec.isStatic) {
       s.points[b] = volumePoints(spec, liquid.samplesPerAxis);
-      s.volumes[b] = shapeVolume(spec, s.points[b], liquid.samplesPerAxis);
+      s.volumes[b] = s.world.mass(b) / spec.density;  // exact (sim/bodies/body_mass.h for meshes)
     }
   }
 }
@@ -281,7 +227,7 @@ std::vector<std::vector<PathKey>> BodyStepper::advanceTo(double time, const Liqu
   std::vector<std::vector<PathKey>> added(n);
   const auto target = static_cast<std::int64_t>(std::llround(time / s.world.substep()));
   while (s.world.substepCount() < target) {
-    for (int b = 0; b < n; ++b) {
+    for (int b = 0; b < n && inLiquid; ++b) {
       if (s.specs[b].isStatic) continue;
       const LiquidPush push = liquidPush(s.gravity, s.world, b, s.points[b], s.volumes[b], s.liquid, inLiquid);
       s.world.setExternalForce(b, push.force, push.torque);

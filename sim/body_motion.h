@@ -74,7 +74,8 @@ class BodyStepper {
   ~BodyStepper();
   BodyStepper(BodyStepper&&) noexcept;
   BodyStepper& operator=(BodyStepper&&) = delete;
-  /// @brief Steps the whole substeps up to `time` [s] with the liquid where `inLiquid` says.
+  /// @brief Steps the whole substeps up to `time` [s] with the liquid where `inLiquid` says (an
+  ///        empty test: no liquid, and no time spent looking for it).
   /// @return each body's path keys added by this call (one list per body)
   std::vector<std::vector<PathKey>> advanceTo(double time, const LiquidRegionTest& inLiquid);
   double time() const;

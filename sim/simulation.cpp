@@ -63,7 +63,10 @@ class FrameLoop {
 
 void FrameLoop::moveBodies(double time) {
   if (!bodies_) return;
-  const LiquidRegionTest around = liquidAround(solver_.liquidDistance(), solver_.grid(), scene_.gravity, reach_);
+  // A scene with no liquid and no emitter never holds any: no test.
+  const LiquidRegionTest around = scene_.liquid.empty() && scene_.emitters.empty()
+                                      ? LiquidRegionTest{}
+                                      : liquidAround(solver_.liquidDistance(), solver_.grid(), scene_.gravity, reach_);
   const std::vector<std::vector<PathKey>> keys = bodies_->advanceTo(time, around);
   for (std::size_t b = 0; b < keys.size(); ++b)
     if (!scene_.bodies[b].isStatic && !keys[b].empty()) solver_.extendSolidPath(scene_.solids.size() + b, keys[b]);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "acoustics/playback/collision_loudness.h"
+#include "sim/core/vec3_math.h"
 
 namespace fluidsound::acoustics {
 namespace {
@@ -22,12 +23,6 @@ struct PairSubstep {
   double rollingSpeed = 0.0;     ///< rolling rate × the rolling body's radius at the point [m/s]
   std::array<double, 3> position{};  ///< of its first point [m]
 };
-
-double distance(const std::array<double, 3>& a, const Vec3& b) {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 /// The log's records by pair (ascending), each pair's substeps in time order.
 std::map<std::pair<int, int>, std::vector<PairSubstep>> pairSubsteps(const sim::ContactLog& log) {
@@ -101,7 +96,7 @@ PlaybackStems renderCollisionPlayback(const sim::ContactLog& log,
     }
     for (std::size_t c = 0; c < s.listeners.size(); ++c) {
       const auto spread = [&](const std::array<double, 3>& at) {  // [dB] and delay [s]
-        const double r = distance(at, Vec3{s.listeners[c][0], s.listeners[c][1], s.listeners[c][2]});
+        const double r = norm(sub(at, s.listeners[c]));
         return std::pair{20.0 * std::log10(1.0 / std::max(r, s.nearest)), r / s.soundSpeed};
       };
       const double level = 20.0 * std::log10(recordings->peakPascals);

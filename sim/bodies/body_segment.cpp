@@ -6,16 +6,11 @@
 #include <variant>
 
 #include "sim/core/quaternion.h"
+#include "sim/core/vec3_math.h"
 
 namespace fluidsound::sim {
 
 namespace {
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 /// Segment p → p + d, t ∈ [0, 1], against the triangle (Möller & Trumbore).
 bool crossesTriangle(const Vec3& p, const Vec3& d, const Vec3& v0, const Vec3& v1, const Vec3& v2) {
@@ -30,6 +25,17 @@ bool crossesTriangle(const Vec3& p, const Vec3& d, const Vec3& v0, const Vec3& v
   if (v < 0.0 || u + v > 1.0) return false;
   const double t = dot(e2, q) / det;
   return t >= 0.0 && t <= 1.0;
+}
+
+/// The triangles of `mesh` the segment p → p + d crosses (stopping at the first when `any`).
+std::size_t crossings(const TriangleMesh& mesh, const Vec3& p, const Vec3& d, bool any) {
+  const auto vertex = [&mesh](std::uint32_t i) {
+    return Vec3{mesh.vertices[i][0], mesh.vertices[i][1], mesh.vertices[i][2]};
+  };
+  std::size_t count = 0;
+  for (const auto& t : mesh.triangles)
+    if (crossesTriangle(p, d, vertex(t[0]), vertex(t[1]), vertex(t[2])) && (++count, any)) break;
+  return count;
 }
 
 }  // namespace
@@ -61,13 +67,27 @@ bool segmentCrossesBody(const RigidBodySpec& body, const Vec3& a, const Vec3& b)
     }
     return true;
   }
-  const TriangleMesh& mesh = std::get<TriangleMesh>(body.shape);
-  const auto vertex = [&mesh](std::uint32_t i) {
-    return Vec3{mesh.vertices[i][0], mesh.vertices[i][1], mesh.vertices[i][2]};
-  };
-  for (const auto& t : mesh.triangles)
-    if (crossesTriangle(p, d, vertex(t[0]), vertex(t[1]), vertex(t[2]))) return true;
-  return false;
+  return crossings(std::get<TriangleMesh>(body.shape), p, d, true) > 0;
+}
+
+bool bodyContainsPoint(const RigidBodySpec& body, const Vec3& local) {
+  if (const auto* sphere = std::get_if<SphereShape>(&body.shape)) return dot(local, local) <= sphere->radius * sphere->radius;
+  if (const auto* box = std::get_if<BoxShape>(&body.shape)) {
+    for (int axis = 0; axis < 3; ++axis)
+      if (std::abs(local[axis]) > box->halfExtents[axis]) return false;
+    return true;
+  }
+  const Vec3 ray{2.0 * boundingRadius(body) + std::abs(local[0]) + 1.0, 0.0, 0.0};  // beyond the mesh
+  return crossings(std::get<TriangleMesh>(body.shape), local, ray, false) % 2 == 1;
+}
+
+Vec3 boundingHalfExtents(const RigidBodySpec& body) {
+  if (const auto* sphere = std::get_if<SphereShape>(&body.shape)) return {sphere->radius, sphere->radius, sphere->radius};
+  if (const auto* box = std::get_if<BoxShape>(&body.shape)) return box->halfExtents;
+  Vec3 half{};
+  for (const auto& v : std::get<TriangleMesh>(body.shape).vertices)
+    for (int a = 0; a < 3; ++a) half[a] = std::max(half[a], std::abs(double(v[a])));
+  return half;
 }
 
 double boundingRadius(const RigidBodySpec& body) {

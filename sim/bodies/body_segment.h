@@ -12,6 +12,15 @@ namespace fluidsound::sim {
 ///        mesh one of whose triangles it crosses (Möller & Trumbore 1997).
 bool segmentCrossesBody(const RigidBodySpec& body, const Vec3& a, const Vec3& b);
 
+/// @brief True when `local` (the body's own frame [m]) lies inside the body: a sphere's or box's
+///        interior, or for a mesh an odd number of its triangles crossed by the ray from the point
+///        along +x (the mesh is closed: io checks it when the scene is read).
+bool bodyContainsPoint(const RigidBodySpec& body, const Vec3& local);
+
+/// @brief The half sides of the body's bounding box about its reference point, in its frame [m]
+///        (a mesh's: the largest |coordinate| of its vertices on each axis).
+Vec3 boundingHalfExtents(const RigidBodySpec& body);
+
 /// @brief The radius of the body's bounding sphere about its reference point [m].
 double boundingRadius(const RigidBodySpec& body);
 

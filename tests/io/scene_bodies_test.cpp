@@ -60,8 +60,6 @@ TEST_P(SceneBodyErrors, NameTheFieldAndWhatWasExpected) {
   expectError(parseError(withBodies(bodies.c_str()).dump()), c.field, c.expected);
 }
 
-
-
 INSTANTIATE_TEST_SUITE_P(
     Bodies, SceneBodyErrors,
     ::testing::Values(

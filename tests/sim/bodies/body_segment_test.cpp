@@ -32,5 +32,24 @@ TEST(BodySegment, CrossesWhatItPassesThroughWhereTheSpecPlacesIt) {
   }
 }
 
+// Claim: a point is inside a body where its shape is: the icosphere mesh of radius 0.1 (its
+// vertices on the sphere, its faces within 2 % of it at level 2) holds a point 0.09 m out and not
+// one 0.11 m out, in every axis direction; a box its interior only. Reference: the geometry.
+TEST(BodySegment, ContainsThePointsInsideItsShape) {
+  const RigidBodySpec mesh{"mesh", test::icosphereMesh(0.1, 2), 7850.0, true};
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {-1.0, 1.0}) {
+      Vec3 in{0.001, 0.0013, 0.0007}, out = in;
+      in[axis] += side * 0.09;
+      out[axis] += side * 0.11;
+      EXPECT_TRUE(bodyContainsPoint(mesh, in)) << axis << " " << side;
+      EXPECT_FALSE(bodyContainsPoint(mesh, out)) << axis << " " << side;
+    }
+  const RigidBodySpec box{"box", BoxShape{{0.1, 0.01, 0.2}}, 750.0, true};
+  EXPECT_TRUE(bodyContainsPoint(box, {0.09, -0.009, 0.19}));
+  EXPECT_FALSE(bodyContainsPoint(box, {0.09, 0.011, 0.0}));
+  EXPECT_EQ(boundingHalfExtents(box), (Vec3{0.1, 0.01, 0.2}));
+}
+
 }  // namespace
 }  // namespace fluidsound::sim
