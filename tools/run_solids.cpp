@@ -55,46 +55,37 @@ Eigen::Vector3d heardFrom(const sim::Scene& scene, const sim::ContactLog& log, s
 
 }  // namespace
 
-void hearWithHeads(const sim::Scene& scene, const sim::ContactLog& log,
-                   const std::vector<acoustics::SoundingBody>& bodies, const acoustics::SolidSoundSettings& settings,
-                   acoustics::SolidStems& stems) {
-  std::size_t channel = 0;
-  std::optional<acoustics::HrirTable> table;
-  for (const sim::Listener& listener : scene.listeners) {
-    if (!listener.head) {
-      ++channel;
-      continue;
-    }
-    if (!table) table = io::readHrirTable(scene.hrtf.value_or(io::defaultHrirFile()), settings.sampleRate);
-    const double gain = acoustics::freeFieldGain(*table);
-    const Eigen::Vector3d centre(listener.position[0], listener.position[1], listener.position[2]);
-    const std::size_t n = settings.samples;
-    std::array<std::vector<double>, 3> left, right;  // impacts, rolling, friction
-    for (std::size_t k = 0; k < 3; ++k) left[k].assign(n, 0.0), right[k].assign(n, 0.0);
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (!bodies[b].model || bodies[b].model->frequency.empty()) continue;
-      // This body alone at the head's centre, then through the pair of the direction it is in.
-      std::vector<acoustics::SoundingBody> alone = bodies;
-      for (std::size_t other = 0; other < alone.size(); ++other)
-        if (other != b) alone[other].model = nullptr;
-      acoustics::SolidSoundSettings atCentre = settings;
-      atCentre.listeners = {centre};
-      StageObserver quiet;
-      const acoustics::SolidStems heard = acoustics::renderSolidSound(log, alone, atCentre, quiet);
-      const Eigen::Vector3d towards = heardFrom(scene, log, b) - centre;
-      const std::size_t direction = acoustics::nearestDirection(
-          *table, acoustics::headDirection({towards.x(), towards.y(), towards.z()}, listener.head->facing,
-                                           listener.head->up));
-      const std::array<const std::vector<float>*, 3> mono = {&heard.impacts[0], &heard.rolling[0], &heard.friction[0]};
-      for (std::size_t k = 0; k < 3; ++k) acoustics::addHeardFrom(*table, direction, *mono[k], gain, left[k], right[k]);
-    }
-    const std::array<std::vector<std::vector<float>>*, 3> stem = {&stems.impacts, &stems.rolling, &stems.friction};
-    for (std::size_t k = 0; k < 3; ++k) {
-      (*stem[k])[channel].assign(left[k].begin(), left[k].end());
-      (*stem[k])[channel + 1].assign(right[k].begin(), right[k].end());
-    }
-    channel += 2;
+HeadStems hearWithHead(const sim::Scene& scene, const sim::ContactLog& log,
+                       const std::vector<acoustics::SoundingBody>& bodies, const acoustics::SolidSoundSettings& settings,
+                       const sim::Listener& listener, const acoustics::HrirTable& table) {
+  const double gain = acoustics::freeFieldGain(table);
+  const Eigen::Vector3d centre(listener.position[0], listener.position[1], listener.position[2]);
+  const std::size_t n = settings.samples;
+  std::array<std::vector<double>, 3> left, right;  // impacts, rolling, friction
+  for (std::size_t k = 0; k < 3; ++k) left[k].assign(n, 0.0), right[k].assign(n, 0.0);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (!bodies[b].model || bodies[b].model->frequency.empty()) continue;
+    // This body alone at the head's centre, then through the pair of the direction it is in.
+    std::vector<acoustics::SoundingBody> alone = bodies;
+    for (std::size_t other = 0; other < alone.size(); ++other)
+      if (other != b) alone[other].model = nullptr;
+    acoustics::SolidSoundSettings atCentre = settings;
+    atCentre.listeners = {centre};
+    StageObserver quiet;
+    const acoustics::SolidStems heard = acoustics::renderSolidSound(log, alone, atCentre, quiet);
+    const Eigen::Vector3d towards = heardFrom(scene, log, b) - centre;
+    const std::size_t direction = acoustics::nearestDirection(
+        table, acoustics::headDirection({towards.x(), towards.y(), towards.z()}, listener.head->facing,
+                                        listener.head->up));
+    const std::array<const std::vector<float>*, 3> mono = {&heard.impacts[0], &heard.rolling[0], &heard.friction[0]};
+    for (std::size_t k = 0; k < 3; ++k) acoustics::addHeardFrom(table, direction, *mono[k], gain, left[k], right[k]);
   }
+  HeadStems ears;
+  for (std::size_t k = 0; k < 3; ++k) {
+    ears.left[k].assign(left[k].begin(), left[k].end());
+    ears.right[k].assign(right[k].begin(), right[k].end());
+  }
+  return ears;
 }
 
 ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& out, std::size_t frames,
@@ -120,7 +111,9 @@ ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& 
   acoustics::SolidSoundSettings settings;
   settings.sampleRate = sampleRate;
   settings.samples = frames;
-  for (const std::array<double, 3>& x : channelPositions(scene)) settings.listeners.emplace_back(x[0], x[1], x[2]);
+  // The plain listeners here; each head's ears below (hearWithHead), each body rendered once per listener.
+  for (const sim::Listener& l : scene.listeners)
+    if (!l.head) settings.listeners.emplace_back(l.position[0], l.position[1], l.position[2]);
   // The static bodies shadow the others where they stand.
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     if (!scene.bodies[i].isStatic) continue;
@@ -141,7 +134,24 @@ ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& 
   } catch (const StageInterrupted& e) {
     throw io::Interrupted(io::interruptionSignal(), e.what());
   }
-  hearWithHeads(scene, log, bodies, settings, stems);
+  // The channels in the bubbles' order: a plain listener's, then a head's left and right ear.
+  std::array<std::vector<std::vector<float>>, 3> channels;
+  const std::array<std::vector<std::vector<float>>*, 3> plain = {&stems.impacts, &stems.rolling, &stems.friction};
+  std::optional<acoustics::HrirTable> table;
+  std::size_t next = 0;
+  for (const sim::Listener& l : scene.listeners) {
+    if (!l.head) {
+      for (std::size_t k = 0; k < 3; ++k) channels[k].push_back(std::move((*plain[k])[next]));
+      ++next;
+      continue;
+    }
+    if (!table) table = io::readHrirTable(scene.hrtf.value_or(io::defaultHrirFile()), sampleRate);
+    HeadStems ears = hearWithHead(scene, log, bodies, settings, l, *table);
+    for (std::size_t k = 0; k < 3; ++k) {
+      channels[k].push_back(std::move(ears.left[k]));
+      channels[k].push_back(std::move(ears.right[k]));
+    }
+  }
   report["bodies"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const acoustics::SolidBodyReport& r = stems.bodies[i];
@@ -164,7 +174,7 @@ ExtraStems renderRunSolids(const sim::Scene& read, const std::filesystem::path& 
                                 {"oscillator_samples", r.oscillatorSamples}});
   }
   return {{"impacts", "rolling", "friction"},
-          {std::move(stems.impacts), std::move(stems.rolling), std::move(stems.friction)},
+          {std::move(channels[0]), std::move(channels[1]), std::move(channels[2])},
           std::move(report)};
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "acoustics/binaural/hrir_table.h"
 #include "acoustics/modal/solid_sound.h"
 #include "sim/core/contact_record.h"
 #include "sim/scene.h"
@@ -23,17 +24,21 @@ sim::ContactLog readRunContactLog(const sim::Scene& scene, const std::filesystem
 /// One position per output channel [m], in the bubbles' order: a listener's, a head's centre twice.
 std::vector<std::array<double, 3>> channelPositions(const sim::Scene& scene);
 
-/// @brief Replaces each head's two channels of `stems` with what its ears hear: each sounding body
-///        rendered alone at the head's centre and convolved with the scene's HRTF pair of the
-///        measured direction nearest the body (a static body's centre, a moving one's place at its
-///        first contact), as the bubbles are (docs/binaural.md).
-/// @throws io::InputError for an HRTF set that cannot be read
-void hearWithHeads(const sim::Scene& scene, const sim::ContactLog& log,
-                   const std::vector<acoustics::SoundingBody>& bodies, const acoustics::SolidSoundSettings& settings,
-                   acoustics::SolidStems& stems);
+/// A head's ears: each of the three stems (impacts, rolling, friction) at its left and right ear.
+struct HeadStems {
+  std::array<std::vector<float>, 3> left, right;
+};
+
+/// @brief What a head `listener` hears of the solids: each sounding body rendered alone at the
+///        head's centre and convolved with `table`'s pair of the measured direction nearest the
+///        body (a static body's centre, a moving one's place at its first contact), as the bubbles
+///        are (docs/binaural.md). `settings` as for the plain listeners (its listeners unused).
+HeadStems hearWithHead(const sim::Scene& scene, const sim::ContactLog& log,
+                       const std::vector<acoustics::SoundingBody>& bodies, const acoustics::SolidSoundSettings& settings,
+                       const sim::Listener& listener, const acoustics::HrirTable& table);
 
 /// @brief The solids' stems of the run in `out`, `frames` samples at `sampleRate` [Hz], one channel
-///        per listener and two per head (hearWithHeads).
+///        per listener and two per head (hearWithHead).
 /// @param scene  as read (its body meshes are loaded here)
 /// @throws io::InputError for a contact log that is missing, damaged or not the scene's;
 ///         io::Interrupted after a signal
